@@ -1,0 +1,182 @@
+# surfadapt — the one build entry.
+#   make            the libraries, the Fortran module and the command-line tool
+#   make demo       build and run the demonstration
+#   make check      build and run every test (C, unit, Fortran, plugin, ABI, sanitizers)
+#   make bench      benchmarks, one JSON line per case
+#   make doc        the HTML reference (Doxygen; warnings are errors)
+#   make install    PREFIX=/usr/local DESTDIR= : header, libraries, .mod, pkg-config, CMake
+# Missing Debian packages are installed when run as root, or named otherwise
+# (scripts/ensure-deps.sh).
+
+VERSION   := 1.0.0
+SOVERSION := 1
+PREFIX    ?= /usr/local
+DESTDIR   ?=
+
+CC  := gcc
+CXX := g++
+FC  := gfortran
+SAN_CC  := clang
+SAN_CXX := clang++
+
+EIGEN_INC := /usr/include/eigen3
+WARNINGS  := -Wall -Wextra -Wpedantic -Wshadow
+CXXFLAGS  := -std=c++17 -O2 -g -fPIC -fvisibility=hidden -fvisibility-inlines-hidden \
+             $(WARNINGS) -Iinclude -Isrc -isystem $(EIGEN_INC)
+CFLAGS    := -std=c11 -O2 -g $(WARNINGS) -Iinclude
+FFLAGS    := -std=f2008 -O2 -g -Wall -Wextra -fimplicit-none
+SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -O1 -g
+
+LIB_NAME  := libsurfadapt.so
+LIB_REAL  := lib/$(LIB_NAME).$(VERSION)
+LIB_SO    := lib/$(LIB_NAME).$(SOVERSION)
+LIB_DEV   := lib/$(LIB_NAME)
+LIB_A     := lib/libsurfadapt.a
+FLIB_A    := lib/libsurfadapt_fortran.a
+FMOD      := lib/fortran/surfadapt.mod
+CLI       := bin/surfadapt
+
+LIB_SRCS  := $(sort $(wildcard src/*/*.cpp))
+LIB_OBJS  := $(LIB_SRCS:%.cpp=build/%.o)
+SAN_OBJS  := $(LIB_SRCS:%.cpp=build/san/%.o)
+APP_CXX   := $(sort $(wildcard apps/surfadapt/*.cpp))
+APP_C     := $(sort $(wildcard apps/surfadapt/*.c))
+APP_OBJS  := $(APP_CXX:%.cpp=build/%.o) $(APP_C:%.c=build/%.o)
+
+# C tests use only the public header and the shared library; unit tests (C++) may use
+# internals and link the static library. Both are CMocka programs.
+TEST_SUPPORT     := $(sort $(wildcard tests/c/support/*.c)) apps/surfadapt/obj_io.c
+TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=build/%.o)
+C_TESTS          := $(patsubst tests/c/%.c,build/tests/%,$(sort $(wildcard tests/c/test_*.c)))
+UNIT_TESTS       := $(patsubst tests/unit/%.cpp,build/tests/%,$(sort $(wildcard tests/unit/unit_*.cpp)))
+SAN_TESTS        := $(patsubst build/tests/%,build/san/tests/%,$(C_TESTS))
+ALLOC_HOOK_OBJ   := build/tests/c/alloc_hook/alloc_hook.o
+FORTRAN_TEST     := build/tests/test_fortran
+PLUGIN_TEST      := build/tests/test_plugin
+BENCHES          := $(patsubst bench/%.c,build/bench/%,$(sort $(wildcard bench/*.c)))
+
+TEST_RPATH := -Wl,-rpath,'$$ORIGIN/../../lib'
+
+.PHONY: all deps deps-check deps-doc check demo bench doc install clean abi-check abi-baseline
+.DEFAULT_GOAL := all
+
+all: deps $(LIB_REAL) $(LIB_SO) $(LIB_DEV) $(LIB_A) $(FLIB_A) $(FMOD) $(CLI)
+
+deps:
+	@scripts/ensure-deps.sh build
+deps-check:
+	@scripts/ensure-deps.sh build check
+deps-doc:
+	@scripts/ensure-deps.sh build doc
+
+# ------------------------------------------------------------------ library
+build/%.o: %.cpp | deps
+	@mkdir -p $(@D)
+	$(CXX) $(CXXFLAGS) -MMD -MP -c $< -o $@
+
+build/%.o: %.c | deps
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Iapps/surfadapt -MMD -MP -c $< -o $@
+
+$(LIB_REAL): $(LIB_OBJS) src/surfadapt.map
+	@mkdir -p $(@D)
+	$(CXX) -shared -Wl,-soname,$(LIB_NAME).$(SOVERSION) -Wl,--version-script=src/surfadapt.map \
+	  -Wl,--no-undefined -o $@ $(LIB_OBJS)
+
+$(LIB_SO): $(LIB_REAL)
+	ln -sf $(LIB_NAME).$(VERSION) $@
+$(LIB_DEV): $(LIB_SO)
+	ln -sf $(LIB_NAME).$(SOVERSION) $@
+
+$(LIB_A): $(LIB_OBJS)
+	@mkdir -p $(@D)
+	rm -f $@ && ar rcs $@ $^
+
+# ------------------------------------------------------------------ Fortran
+build/fortran/surfadapt.o: bindings/fortran/surfadapt.f90 | deps
+	@mkdir -p $(@D) lib/fortran
+	$(FC) $(FFLAGS) -fPIC -J lib/fortran -c $< -o $@
+$(FMOD): build/fortran/surfadapt.o
+$(FLIB_A): build/fortran/surfadapt.o
+	rm -f $@ && ar rcs $@ $^
+
+# ------------------------------------------------------------------ command-line tool
+$(CLI): $(APP_OBJS) $(LIB_SO) $(LIB_DEV)
+	@mkdir -p $(@D)
+	$(CXX) -o $@ $(APP_OBJS) -Llib -lsurfadapt -Wl,-rpath,'$$ORIGIN/../lib'
+
+demo: all
+	$(CLI) demo
+
+# ------------------------------------------------------------------ tests
+build/tests/test_%: build/tests/c/test_%.o $(TEST_SUPPORT_OBJ) $(ALLOC_HOOK_OBJ) $(LIB_SO) $(LIB_DEV)
+	@mkdir -p $(@D)
+	$(CXX) -o $@ $(filter %.o,$^) -Llib -lsurfadapt -lcmocka -lm $(TEST_RPATH)
+
+build/tests/c/%.o: tests/c/%.c | deps
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Itests/c -Iapps/surfadapt -MMD -MP -c $< -o $@
+
+$(ALLOC_HOOK_OBJ): tests/c/alloc_hook/alloc_hook.cpp | deps
+	@mkdir -p $(@D)
+	$(CXX) $(CXXFLAGS) -Itests/c -c $< -o $@
+
+$(UNIT_TESTS): build/tests/%: tests/unit/%.cpp $(TEST_SUPPORT_OBJ) $(LIB_A)
+	@mkdir -p $(@D)
+	$(CXX) $(CXXFLAGS) -Itests/c -Iapps/surfadapt -o $@ $< $(TEST_SUPPORT_OBJ) $(LIB_A) -lcmocka -lm
+
+# The same C tests against the library's objects built with ASan + UBSan (static link).
+build/san/%.o: %.cpp | deps
+	@mkdir -p $(@D)
+	$(SAN_CXX) $(filter-out -O2,$(CXXFLAGS)) $(SAN_FLAGS) -MMD -MP -c $< -o $@
+build/san/%.o: %.c | deps
+	@mkdir -p $(@D)
+	$(SAN_CC) $(filter-out -O2,$(CFLAGS)) $(SAN_FLAGS) -DSFA_NO_ALLOC_HOOK -Itests/c -Iapps/surfadapt \
+	  -MMD -MP -c $< -o $@
+build/san/tests/test_%: build/san/tests/c/test_%.o $(TEST_SUPPORT:%.c=build/san/%.o) $(SAN_OBJS)
+	@mkdir -p $(@D)
+	$(SAN_CXX) $(SAN_FLAGS) -o $@ $^ -lcmocka -lm
+
+$(FORTRAN_TEST): tests/fortran/test_surfadapt.f90 $(FLIB_A) $(FMOD) $(LIB_SO) $(LIB_DEV)
+	@mkdir -p $(@D)/fortran
+	$(FC) $(FFLAGS) -Ilib/fortran -J $(@D)/fortran -o $@ $< $(FLIB_A) -Llib -lsurfadapt $(TEST_RPATH)
+
+$(PLUGIN_TEST): tests/plugin/test_dlopen.c | deps
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -o $@ $< -ldl
+
+check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(PLUGIN_TEST) $(SAN_TESTS)
+	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) \
+	  "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" $(SAN_TESTS)
+
+# ------------------------------------------------------------------ ABI
+# abidiff exit status is a bit set: 4 = the ABI changed (additions), 8 = an incompatible
+# change. Additions pass; anything incompatible fails. To accept a change on purpose
+# (new symbols), run `make abi-baseline` and commit tests/abi/libsurfadapt.abi.
+ABI_BASELINE := tests/abi/libsurfadapt.abi
+abi-check: $(LIB_REAL)
+	@scripts/abi-check.sh $(LIB_REAL) $(ABI_BASELINE)
+abi-baseline: $(LIB_REAL)
+	abidw --headers-dir include --no-corpus-path --out-file $(ABI_BASELINE) $(LIB_REAL)
+
+# ------------------------------------------------------------------ benchmarks
+build/bench/%: bench/%.c $(TEST_SUPPORT_OBJ) $(LIB_SO) $(LIB_DEV)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Itests/c -Iapps/surfadapt -o $@ $< $(TEST_SUPPORT_OBJ) -Llib -lsurfadapt -lm \
+	  $(TEST_RPATH)
+bench: all $(BENCHES)
+	@for b in $(BENCHES); do $$b || exit 1; done
+
+# ------------------------------------------------------------------ documentation
+doc: deps-doc
+	@mkdir -p build/doc
+	doxygen doc/Doxyfile
+
+# ------------------------------------------------------------------ install
+install: all
+	@scripts/install.sh "$(DESTDIR)" "$(PREFIX)" "$(VERSION)" "$(SOVERSION)"
+
+clean:
+	rm -rf build lib bin
+
+-include $(shell find build -name '*.d' 2>/dev/null)

@@ -1,0 +1,416 @@
+/**
+ * @file surfadapt.h
+ * @brief surfadapt: anisotropic adaptation of evolving triangulated surfaces.
+ *
+ * The only public header of the library. It is plain C (C99) and can be included
+ * from C++ as is. The library adapts the explicit interface mesh of a running
+ * simulation: the host hands over vertex coordinates and triangles and the
+ * velocity of every vertex; surfadapt moves the surface and re-meshes it so that
+ * volume, area and sharp features survive severe deformation. The algorithms are
+ * those of X. Jiao, A. Colombi, X. Ni and J. C. Hart, "Anisotropic Mesh
+ * Adaptation for Evolving Triangulated Surfaces".
+ *
+ * @par Conventions
+ * - Counts and indices are `int32_t`; coordinates, velocities, times and field
+ *   values are `double`, in the host's own (consistent) units.
+ * - Arrays are flat and interleaved: `xyz[3*i+k]`, `tris[3*t+k]`, `vel[3*i+k]`,
+ *   `values[ncomp*i+c]`.
+ * - Triangles are counter-clockwise seen from outside: the right-hand normal
+ *   points out of a closed surface.
+ * - Every pointer the host passes is only read (or, for outputs, written) during
+ *   the call; the library never keeps it. Strings the library returns are owned
+ *   by the library (see each function for how long they stay valid).
+ * - Every function that can fail returns a status from ::sfa_status.
+ *   No function aborts, exits, prints, or lets a C++ exception escape.
+ * - **Nothing lost**: after any failed call the surface (mesh, velocities, fields,
+ *   parameters) is exactly as before, and sfa_last_error() says what was wrong.
+ * - **Threads**: no global mutable state. Different handles may be used from
+ *   different threads at the same time; one handle by one thread at a time.
+ */
+#ifndef SURFADAPT_H
+#define SURFADAPT_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Major version of the library (incompatible changes). */
+#define SFA_VERSION_MAJOR 1
+/** Minor version of the library (compatible additions). */
+#define SFA_VERSION_MINOR 0
+/** Patch version of the library (fixes). */
+#define SFA_VERSION_PATCH 0
+/** Version of the binary interface this header describes; see sfa_get_api(). */
+#define SFA_ABI_VERSION 1
+
+/** Status returned by every function that can fail. */
+enum sfa_status {
+    SFA_OK = 0,           /**< Success. */
+    SFA_ERR_ARGUMENT = 1, /**< Null pointer, negative count, buffer too small, unknown key, value out of range. */
+    SFA_ERR_MESH = 2,     /**< The mesh given is not acceptable (index out of range, degenerate or duplicate
+                               triangle, non-manifold edge or vertex, inconsistent orientation, non-finite
+                               coordinate, unreferenced vertex). */
+    SFA_ERR_STATE = 3,    /**< Call out of order, e.g. no mesh set yet. */
+    SFA_ERR_NUMERIC = 4,  /**< Non-finite velocity or field value; a step that cannot be taken without folding. */
+    SFA_ERR_MEMORY = 5,   /**< An allocation failed. */
+    SFA_ERR_INTERNAL = 6  /**< A bug (an invariant check failed) or a capability not implemented yet.
+                               The surface is still as it was. */
+};
+
+/**
+ * Keys of the tunable parameters, all of them `double`.
+ *
+ * Angles are in degrees. Parameters that are lengths are given as ratios to the
+ * desired edge length l (::SFA_PARAM_EDGE_LENGTH), so that they follow l.
+ * Greek letters refer to the paper (§3.1 and §4.3); the defaults are the paper's.
+ * Parameters survive sfa_set_mesh().
+ */
+enum sfa_param {
+    /** Desired edge length l, in length units, >= 0. 0 (the default) means the mean
+        edge length of the mesh last given to sfa_set_mesh(). */
+    SFA_PARAM_EDGE_LENGTH = 0,
+    /** 1 (default): the paper's anisotropic adaptation; 0: isotropic adaptation with
+        the same operations (identity metric), for comparison. */
+    SFA_PARAM_ANISOTROPIC = 1,
+    /** Ridge threshold chi_c on lambda2/lambda1 as the angle f(chi) = 2 atan(sqrt(chi)),
+        degrees in (0, 180); default 45 (§3.1). A vertex whose quadric has
+        lambda2/lambda1 >= chi_c is a feature vertex. */
+    SFA_PARAM_RIDGE_ANGLE = 2,
+    /** Corner threshold chi_r on lambda3/lambda1 as an angle, degrees in (0, 180);
+        default 20 (§3.1). A vertex with lambda3/lambda1 >= chi_r is a corner. */
+    SFA_PARAM_CORNER_ANGLE = 3,
+    /** Lower eigenvalue bound psi_l = lambda1 tan^2(theta/2) of the metric (eq. 12),
+        as the angle theta in degrees, (0, 180); default 8 (§4.3: tan^2(4 deg)). */
+    SFA_PARAM_METRIC_MIN_ANGLE = 4,
+    /** Upper eigenvalue bound psi_u of the metric (eq. 12) as an angle, degrees,
+        (0, 180); default 30 (§4.3: tan^2(15 deg)). Must exceed ::SFA_PARAM_METRIC_MIN_ANGLE
+        when used. */
+    SFA_PARAM_METRIC_MAX_ANGLE = 5,
+    /** L / l: an edge longer than L that is the longest of its triangles is split
+        ("absolute longness", §4.1); > 0, default 1.5. */
+    SFA_PARAM_SPLIT_LENGTH_RATIO = 6,
+    /** s / l: relative-longness splitting (§4.1) only where the shortest edge of the
+        incident triangles is at least s; > 0, default sqrt(psi_l/psi_u) =
+        tan(4 deg)/tan(15 deg) = 0.2611 (§4.3). */
+    SFA_PARAM_SPLIT_SHORTEST_RATIO = 7,
+    /** S / l: "absolute small triangle" contraction threshold (§4.2); > 0,
+        default R = 0.5 (§4.3: S = R l). */
+    SFA_PARAM_CONTRACT_LENGTH_RATIO = 8,
+    /** r: "relative shortness" contraction ratio (§4.2); in (0, 1), default 0.1. */
+    SFA_PARAM_CONTRACT_SHORT_RATIO = 9,
+    /** R: "relative small triangle" contraction ratio (§4.2); in (0, 1), default 0.5. */
+    SFA_PARAM_CONTRACT_SMALL_RATIO = 10,
+    /** theta_s: "absolute small angle" contraction threshold (§4.2), degrees in
+        (0, 60]; default 15 (§4.3). */
+    SFA_PARAM_SMALL_ANGLE = 11,
+    /** theta_l: "relative longness" splitting threshold (§4.1), degrees in [60, 180);
+        default 160 (§4.3). */
+    SFA_PARAM_LARGE_ANGLE = 12,
+    /** Fraction of the time to the first fold that sfa_move() and sfa_advect() take
+        at most; in (0, 1], default 0.5. See sfa_move(). */
+    SFA_PARAM_FOLD_SAFETY = 13,
+    /** What sfa_set_mesh() does with vertices that no triangle uses: 0 (default)
+        rejects the mesh with ::SFA_ERR_MESH naming the first one; 1 drops them and
+        keeps the other vertices in their order (so vertex i of the result is the
+        i-th referenced vertex of the input). */
+    SFA_PARAM_DROP_UNREFERENCED = 14
+};
+
+/** Quantities for sfa_measure(). */
+enum sfa_measure_quantity {
+    /** Signed enclosed volume, sum over triangles of a.(b x c)/6 (divergence theorem;
+        positive for a closed surface with outward normals). For open surfaces the
+        same sum, which depends on the origin. Length units cubed. */
+    SFA_MEASURE_VOLUME = 0,
+    /** Total surface area, length units squared. */
+    SFA_MEASURE_AREA = 1,
+    /** Smallest interior angle of any triangle, degrees. */
+    SFA_MEASURE_MIN_ANGLE = 2,
+    /** Largest interior angle of any triangle, degrees. */
+    SFA_MEASURE_MAX_ANGLE = 3,
+    /** Mean length of the (undirected) edges, length units. */
+    SFA_MEASURE_MEAN_EDGE_LENGTH = 4,
+    /** Worst triangle aspect ratio: circumradius / (2 inradius), 1 for an equilateral
+        triangle, growing without bound as a triangle degenerates. */
+    SFA_MEASURE_MAX_ASPECT_RATIO = 5,
+    /** Shortest edge length, length units. */
+    SFA_MEASURE_MIN_EDGE_LENGTH = 6,
+    /** Longest edge length, length units. */
+    SFA_MEASURE_MAX_EDGE_LENGTH = 7
+};
+
+/** One adaptive surface. Opaque; create with sfa_create(), free with sfa_destroy(). */
+typedef struct sfa_surface sfa_surface;
+
+/**
+ * Velocity field evaluated by the host, in batches (see sfa_advect()).
+ * @param ctx  the host's pointer given to sfa_advect(), passed back unchanged.
+ * @param n    number of points.
+ * @param xyz  `3*n` coordinates of the points (read only, owned by the library,
+ *             valid during the call only).
+ * @param t    time at which to evaluate.
+ * @param vel  `3*n` velocities to write (owned by the library, valid during the call only).
+ *             Every value must be finite.
+ */
+typedef void (*sfa_velocity_fn)(void *ctx, int32_t n, const double *xyz, double t, double *vel);
+
+/* ---------------------------------------------------------------- library */
+
+/** @return the library version as `"MAJOR.MINOR.PATCH"`; a static string. */
+const char *sfa_version_string(void);
+
+/** @return ::SFA_ABI_VERSION of the library loaded (which is 1). */
+int sfa_abi_version(void);
+
+/**
+ * @return a static, never NULL description of a status code, e.g. "SFA_ERR_MESH: the
+ *         mesh given is not acceptable"; unknown codes give "unknown status".
+ */
+const char *sfa_status_string(int status);
+
+/* ------------------------------------------------------ lifecycle, errors */
+
+/**
+ * Creates an empty surface with default parameters.
+ * @param out receives the new handle (owned by the caller, free with sfa_destroy());
+ *            set to NULL on failure.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (`out` is NULL), ::SFA_ERR_MEMORY.
+ */
+int sfa_create(sfa_surface **out);
+
+/** Frees a surface and everything it owns. NULL is a no-op. */
+void sfa_destroy(sfa_surface *s);
+
+/**
+ * @return a description of why the last call on `s` failed, naming the offending input
+ *         (e.g. "triangle 17 uses vertex 2041, but there are 2000 vertices"), or "" after a
+ *         successful call. Never NULL. Owned by `s`, valid until the next call on `s`.
+ *         For `s == NULL` a static string.
+ */
+const char *sfa_last_error(const sfa_surface *s);
+
+/* ------------------------------------------------------- mesh in and out */
+
+/**
+ * Replaces the mesh after validating it completely.
+ *
+ * Accepted: closed or open (bounded) orientable 2-manifold surfaces, possibly of
+ * several components, consistently oriented. Rejected with ::SFA_ERR_MESH and a
+ * message naming the element and the rule: no triangles, a non-finite coordinate,
+ * a vertex index out of range, a triangle that uses a vertex twice, a zero-area
+ * triangle, two triangles on the same three vertices (in any order), an edge
+ * shared by more than two triangles, two triangles that traverse their shared edge
+ * in the same direction (inconsistent orientation), a vertex whose triangles form
+ * more than one fan (bow-tie), and a vertex that no triangle uses (unless
+ * ::SFA_PARAM_DROP_UNREFERENCED is 1). Messages count elements in the host's index base.
+ *
+ * Drops the velocities and fields of the previous mesh; keeps the parameters.
+ *
+ * @param s          the surface.
+ * @param nverts     number of vertices, >= 0.
+ * @param xyz        `3*nverts` coordinates (read only, not kept).
+ * @param ntris      number of triangles, >= 0.
+ * @param tris       `3*ntris` vertex indices, counter-clockwise seen from outside (read only, not kept).
+ * @param index_base 0 if vertex indices start at 0 (C), 1 if they start at 1 (Fortran).
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, negative count, index_base not 0 or 1),
+ *         ::SFA_ERR_MESH, ::SFA_ERR_MEMORY.
+ */
+int sfa_set_mesh(sfa_surface *s, int32_t nverts, const double *xyz, int32_t ntris,
+                 const int32_t *tris, int32_t index_base);
+
+/**
+ * Current numbers of vertices and triangles (0 and 0 before any mesh is set).
+ * @param nverts receives the vertex count (may be NULL if not wanted).
+ * @param ntris  receives the triangle count (may be NULL if not wanted).
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (`s` is NULL).
+ */
+int sfa_get_counts(const sfa_surface *s, int32_t *nverts, int32_t *ntris);
+
+/**
+ * Copies the current mesh out: dense (no holes), in a deterministic order. Before any
+ * sfa_adapt(), the order is that of the mesh set (less dropped unreferenced vertices).
+ * @param vert_capacity number of vertices `xyz` has room for (it holds `3*vert_capacity` doubles).
+ * @param xyz           receives `3*nverts` coordinates (owned by the caller).
+ * @param tri_capacity  number of triangles `tris` has room for.
+ * @param tris          receives `3*ntris` vertex indices (owned by the caller).
+ * @param index_base    0 or 1, the base of the indices written.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, capacity too small: nothing written;
+ *         bad index_base), ::SFA_ERR_STATE (no mesh set).
+ */
+int sfa_get_mesh(const sfa_surface *s, int32_t vert_capacity, double *xyz, int32_t tri_capacity,
+                 int32_t *tris, int32_t index_base);
+
+/* ------------------------------------------------------------ parameters */
+
+/**
+ * Sets one parameter (see ::sfa_param for keys, units, ranges and defaults).
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL handle, unknown key, non-finite or out-of-range value).
+ */
+int sfa_set_param(sfa_surface *s, int key, double value);
+
+/**
+ * Reads one parameter.
+ * @param value receives the value (owned by the caller).
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, unknown key).
+ */
+int sfa_get_param(const sfa_surface *s, int key, double *value);
+
+/* ---------------------------------------------------------------- motion */
+
+/**
+ * Sets the velocity of every current vertex, used by sfa_move(). They stay set until
+ * the next sfa_set_velocities() or sfa_set_mesh().
+ * @param vel `3*nverts` velocity components, length units per time unit (read only, not kept).
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer), ::SFA_ERR_STATE (no mesh),
+ *         ::SFA_ERR_NUMERIC (a non-finite component; names the vertex), ::SFA_ERR_MEMORY.
+ */
+int sfa_set_velocities(sfa_surface *s, const double *vel);
+
+/**
+ * Moves every vertex by one explicit Euler step with the velocities set:
+ * x += dt_taken * v. Connectivity and vertex count do not change.
+ *
+ * Fold control: under linear motion the normal n(t) of each triangle is quadratic in t,
+ * and the triangle turns over at the first positive root of n(0).n(t) = 0. The step is
+ * cut to `dt_taken = min(dt, f * t_fold)` with f = ::SFA_PARAM_FOLD_SAFETY, t_fold the
+ * earliest such root over all triangles. The host sub-steps with the rest (dt - dt_taken).
+ *
+ * @param dt       the step wanted, time units, finite and > 0.
+ * @param dt_taken receives the step taken, 0 < *dt_taken <= dt.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, dt not finite or <= 0),
+ *         ::SFA_ERR_STATE (no mesh, or no velocities set), ::SFA_ERR_NUMERIC (the step
+ *         that avoids folding is too small to change any coordinate), ::SFA_ERR_MEMORY.
+ */
+int sfa_move(sfa_surface *s, double dt, double *dt_taken);
+
+/**
+ * Advances the surface by one classic fourth-order Runge–Kutta step through a velocity
+ * field that the host evaluates in batches of all vertices (four calls of `f` per attempt).
+ * The same fold control as sfa_move() applies to the RK4 displacement: if the step
+ * would fold a triangle it is retried with a shorter one, and `*dt_taken < dt`.
+ * Connectivity and vertex count do not change; the velocities set by
+ * sfa_set_velocities() are not touched.
+ *
+ * @param f        the velocity field (must not be NULL); must write finite values.
+ * @param ctx      passed to `f` unchanged (may be NULL; never dereferenced by the library).
+ * @param t        time at the start of the step.
+ * @param dt       the step wanted, finite and > 0.
+ * @param dt_taken receives the step taken, 0 < *dt_taken <= dt.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT, ::SFA_ERR_STATE (no mesh), ::SFA_ERR_NUMERIC
+ *         (`f` wrote a non-finite value, or no step short enough avoids folding), ::SFA_ERR_MEMORY.
+ */
+int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t, double dt, double *dt_taken);
+
+/* ------------------------------------------------------------ adaptation */
+
+/**
+ * Anisotropic vertex redistribution (paper §3.2): `iterations` Jacobi sweeps that move
+ * vertices within their null space. Connectivity and vertex order do not change, so
+ * host arrays stay valid.
+ * @param iterations number of sweeps, >= 0.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT, ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY,
+ *         ::SFA_ERR_INTERNAL (in this release: "not implemented yet").
+ */
+int sfa_smooth(sfa_surface *s, int32_t iterations);
+
+/**
+ * The full adaptation (paper §3–§4): smoothing, anisotropic flipping, splitting and
+ * contraction. Vertex and triangle counts may change: read the mesh back with
+ * sfa_get_counts() and sfa_get_mesh().
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT, ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY,
+ *         ::SFA_ERR_INTERNAL (in this release: "not implemented yet").
+ */
+int sfa_adapt(sfa_surface *s);
+
+/* -------------------------------------------------------------- analysis */
+
+/**
+ * Feature rank of every current vertex: 0 smooth, 1 ridge, 2 corner (boundary
+ * vertices count as ridge or corner).
+ * @param capacity number of `int32_t` that `ranks` has room for, >= nverts.
+ * @param ranks    receives nverts ranks (owned by the caller).
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, capacity too small: nothing written),
+ *         ::SFA_ERR_STATE (no mesh), ::SFA_ERR_INTERNAL (in this release: "not implemented yet").
+ */
+int sfa_get_feature_ranks(const sfa_surface *s, int32_t capacity, int32_t *ranks);
+
+/**
+ * Measures the current surface.
+ * @param quantity one of ::sfa_measure_quantity.
+ * @param value    receives the value (owned by the caller).
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, unknown quantity), ::SFA_ERR_STATE (no mesh).
+ */
+int sfa_measure(const sfa_surface *s, int quantity, double *value);
+
+/* ---------------------------------------------------------- vertex fields */
+
+/**
+ * Attaches host data to the vertices: `ncomp` doubles per vertex, which follow every
+ * operation that moves or creates vertices. Fields are dropped by sfa_set_mesh().
+ * @param ncomp    components per vertex, >= 1.
+ * @param values   `ncomp*nverts` values, `values[ncomp*i+c]` (read only, not kept); finite.
+ * @param field_id receives the id of the field: 0 for the first field of a mesh, then 1, 2, ...
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, ncomp < 1), ::SFA_ERR_STATE (no mesh),
+ *         ::SFA_ERR_NUMERIC (a non-finite value; names the vertex), ::SFA_ERR_MEMORY.
+ */
+int sfa_add_field(sfa_surface *s, int32_t ncomp, const double *values, int32_t *field_id);
+
+/**
+ * Copies a field's values on the current vertices out.
+ * @param field_id an id from sfa_add_field().
+ * @param capacity number of doubles `values` has room for, >= ncomp*nverts.
+ * @param values   receives `ncomp*nverts` values (owned by the caller).
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, unknown id, capacity too small:
+ *         nothing written), ::SFA_ERR_STATE (no mesh).
+ */
+int sfa_get_field(const sfa_surface *s, int32_t field_id, int32_t capacity, double *values);
+
+/* ---------------------------------------------------------------- plugins */
+
+/**
+ * The function table of one ABI version, for hosts that `dlopen` the library and
+ * resolve only sfa_get_api(). Members follow the order of the functions above;
+ * new members are only ever appended, and `struct_size` tells how many there are.
+ */
+typedef struct sfa_api {
+    uint32_t struct_size; /**< sizeof(sfa_api) of the library that filled the table. */
+    uint32_t abi;         /**< The ABI version of the table, ::SFA_ABI_VERSION. */
+    const char *(*version_string)(void);                      /**< sfa_version_string() */
+    int (*abi_version)(void);                                 /**< sfa_abi_version() */
+    const char *(*status_string)(int status);                 /**< sfa_status_string() */
+    int (*create)(sfa_surface **out);                         /**< sfa_create() */
+    void (*destroy)(sfa_surface *s);                          /**< sfa_destroy() */
+    const char *(*last_error)(const sfa_surface *s);          /**< sfa_last_error() */
+    int (*set_mesh)(sfa_surface *s, int32_t nverts, const double *xyz, int32_t ntris,
+                    const int32_t *tris, int32_t index_base); /**< sfa_set_mesh() */
+    int (*get_counts)(const sfa_surface *s, int32_t *nverts, int32_t *ntris); /**< sfa_get_counts() */
+    int (*get_mesh)(const sfa_surface *s, int32_t vert_capacity, double *xyz, int32_t tri_capacity,
+                    int32_t *tris, int32_t index_base);     /**< sfa_get_mesh() */
+    int (*set_param)(sfa_surface *s, int key, double value);  /**< sfa_set_param() */
+    int (*get_param)(const sfa_surface *s, int key, double *value); /**< sfa_get_param() */
+    int (*set_velocities)(sfa_surface *s, const double *vel); /**< sfa_set_velocities() */
+    int (*move)(sfa_surface *s, double dt, double *dt_taken); /**< sfa_move() */
+    int (*advect)(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t, double dt,
+                  double *dt_taken);                          /**< sfa_advect() */
+    int (*smooth)(sfa_surface *s, int32_t iterations);        /**< sfa_smooth() */
+    int (*adapt)(sfa_surface *s);                             /**< sfa_adapt() */
+    int (*get_feature_ranks)(const sfa_surface *s, int32_t capacity, int32_t *ranks); /**< sfa_get_feature_ranks() */
+    int (*measure)(const sfa_surface *s, int quantity, double *value); /**< sfa_measure() */
+    int (*add_field)(sfa_surface *s, int32_t ncomp, const double *values, int32_t *field_id); /**< sfa_add_field() */
+    int (*get_field)(const sfa_surface *s, int32_t field_id, int32_t capacity, double *values); /**< sfa_get_field() */
+} sfa_api;
+
+/**
+ * The function table of ABI version `abi_version`, or NULL if this library does not
+ * provide that version. The table is static and lives as long as the library is loaded.
+ * A host that `dlopen`s `libsurfadapt.so.1` resolves this one symbol and nothing else.
+ */
+const sfa_api *sfa_get_api(uint32_t abi_version);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SURFADAPT_H */
