@@ -1,0 +1,24 @@
+// The state behind one sfa_surface handle. Every entry point builds what it changes aside
+// and commits it with non-throwing moves and swaps, so that a failure at any point, out of
+// memory included, leaves this exactly as it was ("nothing lost", API.md).
+#pragma once
+
+#include "adapt/parameters.hpp"
+#include "fields/vertex_fields.hpp"
+#include "mesh/tri_mesh.hpp"
+
+#include <cstdint>
+#include <vector>
+
+struct sfa_surface {
+    sfa::TriMesh mesh;
+    bool has_mesh = false;
+    int32_t index_base = 0; // the base of the last sfa_set_mesh, used to number vertices in messages
+    double mean_edge_length_at_set = 0; // what SFA_PARAM_EDGE_LENGTH = 0 stands for
+    sfa::Parameters params;
+    std::vector<sfa::Vec3> velocity; // empty until sfa_set_velocities
+    std::vector<sfa::VertexField> fields;
+
+    // A fixed buffer, so that reporting an error (out of memory included) never allocates.
+    mutable char last_error[1024] = "";
+};

@@ -1,0 +1,25 @@
+#include "fields/vertex_fields.hpp"
+
+#include "mesh/error.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace sfa {
+
+VertexField checked_field(int32_t ncomp, const double *values, int32_t num_vertices, int32_t index_base)
+{
+    const size_t count = static_cast<size_t>(ncomp) * static_cast<size_t>(num_vertices);
+    for (size_t i = 0; i < count; ++i) {
+        if (!std::isfinite(values[i])) {
+            char message[160];
+            std::snprintf(message, sizeof message, "vertex %zu has a non-finite value %g in component %zu of the field",
+                          i / static_cast<size_t>(ncomp) + static_cast<size_t>(index_base), values[i],
+                          i % static_cast<size_t>(ncomp));
+            throw Error(Status::numeric, message);
+        }
+    }
+    return VertexField{ncomp, std::vector<double>(values, values + count)};
+}
+
+} // namespace sfa

@@ -1,0 +1,20 @@
+// Host data living on the vertices (sfa_add_field): ncomp doubles per vertex, carried
+// through every operation that moves or creates vertices.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace sfa {
+
+struct VertexField {
+    int32_t ncomp;
+    std::vector<double> values; // values[ncomp * v + c]
+};
+
+// Copies a host's field after checking every value is finite; throws
+// Error(Status::numeric) naming the first vertex with a non-finite value, counted from
+// index_base.
+VertexField checked_field(int32_t ncomp, const double *values, int32_t num_vertices, int32_t index_base);
+
+} // namespace sfa

@@ -1,0 +1,31 @@
+// Global measures a host watches on its interface: enclosed volume (divergence theorem),
+// area, angles, edge lengths, triangle aspect ratio.
+#pragma once
+
+#include "mesh/tri_mesh.hpp"
+
+namespace sfa {
+
+// Signed volume sum over triangles of a.(b x c)/6: positive for a closed surface whose
+// normals point out; for an open surface the same sum, which depends on the origin.
+double enclosed_volume(const TriMesh &mesh);
+double surface_area(const TriMesh &mesh);
+
+struct AngleRange {
+    double min_degrees;
+    double max_degrees;
+};
+AngleRange angle_range(const TriMesh &mesh);
+
+struct EdgeLengths {
+    double min;
+    double mean;
+    double max;
+};
+// Each undirected edge once.
+EdgeLengths edge_lengths(const TriMesh &mesh);
+
+// Worst circumradius / (2 inradius) over the triangles: 1 for equilateral ones.
+double max_aspect_ratio(const TriMesh &mesh);
+
+} // namespace sfa

@@ -1,0 +1,56 @@
+// The array-based half-edge (half-facet) triangle mesh (DESIGN.md, "Data structure").
+//
+// Half-edge h = 3*t + i is edge i of triangle t, running from corner i to corner i+1.
+// opp[h] is the twin half-edge in the neighbouring triangle, or -1 on a boundary.
+// v2h[v] is one half-edge leaving v; for a boundary vertex it is the one whose twin is
+// missing, so that a counter-clockwise walk from it (rotate_ccw) visits the whole fan.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace sfa {
+
+using Vec3 = Eigen::Vector3d;
+using Triangle = std::array<int32_t, 3>;
+
+struct TriMesh {
+    std::vector<Vec3> pos;
+    std::vector<Triangle> tri;
+    std::vector<int32_t> opp;
+    std::vector<int32_t> v2h;
+
+    int32_t num_vertices() const { return static_cast<int32_t>(pos.size()); }
+    int32_t num_triangles() const { return static_cast<int32_t>(tri.size()); }
+
+    static int32_t face(int32_t h) { return h / 3; }
+    static int32_t next(int32_t h) { return h - h % 3 + (h + 1) % 3; }
+    static int32_t prev(int32_t h) { return h - h % 3 + (h + 2) % 3; }
+    int32_t tail(int32_t h) const { return tri[h / 3][h % 3]; }
+    int32_t head(int32_t h) const { return tri[h / 3][(h + 1) % 3]; }
+    bool is_boundary_halfedge(int32_t h) const { return opp[h] < 0; }
+    bool is_boundary_vertex(int32_t v) const { return opp[v2h[v]] < 0; }
+
+    // The next half-edge leaving the same vertex, counter-clockwise; -1 past a boundary.
+    int32_t rotate_ccw(int32_t h) const { return opp[prev(h)]; }
+
+    // Calls fn(h) for every half-edge leaving v, counter-clockwise from v2h[v].
+    template <class Fn>
+    void for_each_outgoing(int32_t v, Fn &&fn) const {
+        const int32_t start = v2h[v];
+        int32_t h = start;
+        do {
+            fn(h);
+            h = rotate_ccw(h);
+        } while (h >= 0 && h != start);
+    }
+};
+
+// Builds opp and v2h from pos and tri. Requires a valid oriented manifold (as checked by
+// validate_mesh); it does not check anything itself.
+void build_adjacency(TriMesh &mesh);
+
+} // namespace sfa

@@ -1,0 +1,69 @@
+#include "motion/rk4_step.hpp"
+
+#include "mesh/error.hpp"
+#include "motion/fold_time.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace sfa {
+namespace {
+
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "positions are passed to the host as a flat array");
+
+std::vector<Vec3> evaluate(const VelocityField &field, const std::vector<Vec3> &points, double t)
+{
+    std::vector<Vec3> velocity(points.size(), Vec3::Zero());
+    field(static_cast<int32_t>(points.size()), points.data()->data(), t, velocity.data()->data());
+    for (size_t v = 0; v < velocity.size(); ++v) {
+        if (!velocity[v].allFinite()) {
+            char message[200];
+            std::snprintf(message, sizeof message,
+                          "the velocity callback gave vertex %zu a non-finite velocity (%g, %g, %g) at t = %g", v,
+                          velocity[v].x(), velocity[v].y(), velocity[v].z(), t);
+            throw Error(Status::numeric, message);
+        }
+    }
+    return velocity;
+}
+
+// The RK4 mean velocity (k1 + 2 k2 + 2 k3 + k4) / 6 over a step h.
+std::vector<Vec3> rk4_velocity(const std::vector<Vec3> &pos, const VelocityField &field, double t, double h)
+{
+    const std::vector<Vec3> k1 = evaluate(field, pos, t);
+    const std::vector<Vec3> k2 = evaluate(field, displaced(pos, k1, h / 2), t + h / 2);
+    const std::vector<Vec3> k3 = evaluate(field, displaced(pos, k2, h / 2), t + h / 2);
+    const std::vector<Vec3> k4 = evaluate(field, displaced(pos, k3, h), t + h);
+    std::vector<Vec3> mean(pos.size());
+    for (size_t v = 0; v < pos.size(); ++v)
+        mean[v] = (k1[v] + 2 * k2[v] + 2 * k3[v] + k4[v]) / 6;
+    return mean;
+}
+
+} // namespace
+
+Step rk4_step(const TriMesh &mesh, const VelocityField &field, double t, double dt, double safety)
+{
+    // Each retry shrinks h to what the fold control allows for the last velocity; the
+    // velocity changes with h only at higher order, so this settles in a few tries.
+    constexpr int max_tries = 40;
+    double h = dt;
+    for (int attempt = 0; attempt < max_tries; ++attempt) {
+        const std::vector<Vec3> velocity = rk4_velocity(mesh.pos, field, t, h);
+        const double allowed = safety * first_fold_time(mesh, velocity);
+        if (h <= allowed) {
+            Step step{displaced(mesh.pos, velocity, h), h};
+            if (h < dt && step.positions == mesh.pos)
+                break;
+            return step;
+        }
+        h = std::min(allowed, 0.9 * h); // a little below, so that the retries do not creep
+    }
+    char message[200];
+    std::snprintf(message, sizeof message,
+                  "no Runge-Kutta step from t = %g avoids folding a triangle (tried down to dt = %g)", t, h);
+    throw Error(Status::numeric, message);
+}
+
+} // namespace sfa
