@@ -1,0 +1,38 @@
+#!/bin/sh
+# Runs each argument as one test program (an argument may hold a command with its own
+# arguments), shows its output, and adds up the counts the programs print: CMocka's
+# "[  PASSED  ] N test(s)." / "[  FAILED  ] N test(s)" / "[  SKIPPED ] N test(s)" lines,
+# or our own "name: N passed, M failed" lines. Ends with one line for the whole run.
+set -u
+passed=0 failed=0 skipped=0 broken=""
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+
+count() { # $1 = regexp before the number
+  sed -n "s/^$1 *\([0-9][0-9]*\).*/\1/p" "$log" | awk '{s += $1} END {print s + 0}'
+}
+
+for program in "$@"; do
+  echo "=== $program"
+  sh -c "$program" >"$log" 2>&1
+  status=$?
+  cat "$log"
+  p=$(count '\[  PASSED  \]')
+  f=$(count '\[  FAILED  \]')
+  k=$(count '\[  SKIPPED \]')
+  # Our own programs: "name: N passed, M failed"
+  p=$((p + $(sed -n 's/^[a-z-]*: \([0-9][0-9]*\) passed, [0-9][0-9]* failed.*/\1/p' "$log" | awk '{s+=$1} END {print s+0}')))
+  f=$((f + $(sed -n 's/^[a-z-]*: [0-9][0-9]* passed, \([0-9][0-9]*\) failed.*/\1/p' "$log" | awk '{s+=$1} END {print s+0}')))
+  if [ "$status" -ne 0 ] && [ "$f" -eq 0 ]; then
+    f=1 # it crashed or failed without saying so
+  fi
+  passed=$((passed + p)) failed=$((failed + f)) skipped=$((skipped + k))
+  [ "$status" -ne 0 ] && broken="$broken
+  $program (exit $status)"
+done
+
+if [ -n "$broken" ]; then
+  echo "failing programs:$broken"
+fi
+echo "check: $passed passed, $failed failed, $skipped skipped"
+[ "$failed" -eq 0 ] && [ -z "$broken" ]
