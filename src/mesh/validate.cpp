@@ -96,26 +96,23 @@ void check_areas(const std::vector<Vec3> &pos, const std::vector<Triangle> &tri,
     }
 }
 
-// Two triangles on the same three vertices, in any rotation or orientation.
-void check_duplicates(const std::vector<Triangle> &tri, const std::vector<int32_t> &host_id, int32_t base)
+// Two triangles on the same three vertices, in any rotation or orientation: both are in
+// the star of their smallest vertex, so only that star is searched.
+void check_duplicates(const TriMesh &mesh, const VertexStar &star, const std::vector<int32_t> &host_id, int32_t base)
 {
-    struct Key {
-        Triangle sorted;
-        int32_t t;
+    const auto sorted = [](Triangle t) {
+        std::sort(t.begin(), t.end());
+        return t;
     };
-    std::vector<Key> keys(tri.size());
-    for (size_t t = 0; t < tri.size(); ++t) {
-        keys[t].sorted = tri[t];
-        std::sort(keys[t].sorted.begin(), keys[t].sorted.end());
-        keys[t].t = static_cast<int32_t>(t);
+    for (int32_t t = 0; t < mesh.num_triangles(); ++t) {
+        const Triangle corners = sorted(mesh.tri[t]);
+        for (int32_t k = star.begin(corners[0]); k < star.end(corners[0]); ++k) {
+            const int32_t other = TriMesh::face(star.outgoing[k]);
+            if (other < t && sorted(mesh.tri[other]) == corners)
+                reject("triangles %d and %d use the same three vertices (%d, %d, %d)", other + base, t + base,
+                       host_id[corners[0]] + base, host_id[corners[1]] + base, host_id[corners[2]] + base);
+        }
     }
-    std::sort(keys.begin(), keys.end(),
-              [](const Key &x, const Key &y) { return x.sorted != y.sorted ? x.sorted < y.sorted : x.t < y.t; });
-    for (size_t k = 1; k < keys.size(); ++k)
-        if (keys[k].sorted == keys[k - 1].sorted)
-            reject("triangles %d and %d use the same three vertices (%d, %d, %d)", keys[k - 1].t + base,
-                   keys[k].t + base, host_id[keys[k].sorted[0]] + base, host_id[keys[k].sorted[1]] + base,
-                   host_id[keys[k].sorted[2]] + base);
 }
 
 // Every edge has one or two triangles, and two triangles traverse it in opposite directions.
@@ -127,11 +124,11 @@ void check_edges(const TriMesh &mesh, const VertexStar &star, const std::vector<
         const int32_t a = mesh.tail(h), b = mesh.head(h);
         sharing.clear();
         for (int32_t k = star.begin(a); k < star.end(a); ++k)
-            if (mesh.head(star.outgoing[k]) == b)
+            if (star.head[k] == b)
                 sharing.push_back(star.outgoing[k]);
         const size_t same_direction = sharing.size();
         for (int32_t k = star.begin(b); k < star.end(b); ++k)
-            if (mesh.head(star.outgoing[k]) == a)
+            if (star.head[k] == a)
                 sharing.push_back(star.outgoing[k]);
         if (sharing.size() == 1 || *std::min_element(sharing.begin(), sharing.end()) != h)
             continue; // a boundary edge, or an edge already looked at from its first half-edge
@@ -193,8 +190,8 @@ TriMesh validated_mesh(const MeshInput &in)
 
     const int32_t base = in.index_base;
     check_areas(mesh.pos, mesh.tri, host_id, base);
-    check_duplicates(mesh.tri, host_id, base);
     const VertexStar star(mesh.num_vertices(), mesh.tri);
+    check_duplicates(mesh, star, host_id, base);
     check_edges(mesh, star, host_id, base);
     link_twins(mesh, star);
     assign_vertex_halfedges(mesh, star);

@@ -3,7 +3,7 @@
 namespace sfa {
 
 VertexStar::VertexStar(int32_t num_vertices, const std::vector<Triangle> &tri)
-    : first(static_cast<size_t>(num_vertices) + 1, 0), outgoing(3 * tri.size())
+    : first(static_cast<size_t>(num_vertices) + 1, 0), outgoing(3 * tri.size()), head(3 * tri.size())
 {
     for (const Triangle &t : tri)
         for (int32_t v : t)
@@ -12,8 +12,11 @@ VertexStar::VertexStar(int32_t num_vertices, const std::vector<Triangle> &tri)
         first[v + 1] += first[v];
     std::vector<int32_t> fill(first.begin(), first.end() - 1);
     const int32_t num_halfedges = static_cast<int32_t>(outgoing.size());
-    for (int32_t h = 0; h < num_halfedges; ++h)
-        outgoing[fill[tri[h / 3][h % 3]]++] = h;
+    for (int32_t h = 0; h < num_halfedges; ++h) {
+        const int32_t k = fill[tri[h / 3][h % 3]]++;
+        outgoing[k] = h;
+        head[k] = tri[h / 3][(h + 1) % 3];
+    }
 }
 
 void link_twins(TriMesh &mesh, const VertexStar &star)
@@ -24,9 +27,8 @@ void link_twins(TriMesh &mesh, const VertexStar &star)
         const int32_t a = mesh.tail(h), b = mesh.head(h);
         // The twin of a->b leaves b and arrives at a.
         for (int32_t k = star.begin(b); k < star.end(b); ++k) {
-            const int32_t g = star.outgoing[k];
-            if (mesh.head(g) == a) {
-                mesh.opp[h] = g;
+            if (star.head[k] == a) {
+                mesh.opp[h] = star.outgoing[k];
                 break;
             }
         }

@@ -13,6 +13,7 @@ namespace sfa {
 struct VertexStar {
     std::vector<int32_t> first; // first[v] .. first[v+1]-1 index into outgoing
     std::vector<int32_t> outgoing; // half-edges, grouped by their tail vertex
+    std::vector<int32_t> head;     // head[k]: the vertex outgoing[k] points to (saves a lookup in tri)
 
     VertexStar(int32_t num_vertices, const std::vector<Triangle> &tri);
 
