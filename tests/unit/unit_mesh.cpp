@@ -1,0 +1,142 @@
+// Unit tests of the mesh core: adjacency, one-ring walks and the invariant checker.
+#include "mesh/invariants.hpp"
+#include "mesh/validate.hpp"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstddef>
+#include <cstring>
+#include <string>
+#include <setjmp.h>
+#include <vector>
+
+extern "C" {
+#include <cmocka.h>
+}
+
+using namespace sfa;
+
+namespace {
+
+// A unit cube, triangles counter-clockwise from outside.
+const double cube_xyz[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+const int32_t cube_tris[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+                             1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+
+// A flat 3x3-vertex grid patch: open, 8 triangles.
+std::vector<double> grid_xyz()
+{
+    std::vector<double> xyz;
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i)
+            xyz.insert(xyz.end(), {double(i), double(j), 0.0});
+    return xyz;
+}
+std::vector<int32_t> grid_tris()
+{
+    std::vector<int32_t> tris;
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) {
+            const int32_t a = 3 * j + i, b = a + 1, c = a + 4, d = a + 3;
+            tris.insert(tris.end(), {a, b, c, a, c, d});
+        }
+    return tris;
+}
+
+TriMesh cube() { return validated_mesh(MeshInput{8, cube_xyz, 12, cube_tris, 0, false}); }
+
+TriMesh grid()
+{
+    static const std::vector<double> xyz = grid_xyz();
+    static const std::vector<int32_t> tris = grid_tris();
+    return validated_mesh(MeshInput{9, xyz.data(), 8, tris.data(), 0, false});
+}
+
+void closed_mesh_has_every_twin(void **)
+{
+    const TriMesh mesh = cube();
+    assert_string_equal(invariant_violation(mesh).c_str(), "");
+    for (int32_t h = 0; h < 36; ++h) {
+        assert_true(mesh.opp[h] >= 0);
+        assert_int_equal(mesh.opp[mesh.opp[h]], h);
+        assert_int_equal(mesh.tail(mesh.opp[h]), mesh.head(h));
+    }
+}
+
+void one_ring_walk_visits_every_triangle_once(void **)
+{
+    for (const TriMesh &mesh : {cube(), grid()}) {
+        std::vector<int32_t> valence(mesh.num_vertices(), 0);
+        for (const Triangle &t : mesh.tri)
+            for (int32_t v : t)
+                ++valence[v];
+        for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
+            std::vector<int32_t> faces;
+            mesh.for_each_outgoing(v, [&](int32_t h) {
+                assert_int_equal(mesh.tail(h), v);
+                faces.push_back(TriMesh::face(h));
+            });
+            assert_int_equal(static_cast<int>(faces.size()), valence[v]);
+        }
+    }
+}
+
+void boundary_vertices_start_at_their_boundary_halfedge(void **)
+{
+    const TriMesh mesh = grid();
+    assert_string_equal(invariant_violation(mesh).c_str(), "");
+    int boundary = 0;
+    for (int32_t v = 0; v < mesh.num_vertices(); ++v)
+        boundary += mesh.is_boundary_vertex(v);
+    assert_int_equal(boundary, 8); // all but the centre vertex 4
+    assert_false(mesh.is_boundary_vertex(4));
+}
+
+void checker_names_a_broken_twin(void **)
+{
+    TriMesh mesh = cube();
+    mesh.opp[mesh.opp[0]] = 5;
+    assert_string_not_equal(invariant_violation(mesh).c_str(), "");
+}
+
+void checker_names_a_bad_vertex_halfedge(void **)
+{
+    TriMesh mesh = cube();
+    mesh.v2h[3] = mesh.v2h[4];
+    const std::string message = invariant_violation(mesh);
+    assert_non_null(std::strstr(message.c_str(), "vertex 3"));
+}
+
+void checker_names_a_non_finite_position(void **)
+{
+    TriMesh mesh = cube();
+    mesh.pos[6].y() = NAN;
+    assert_non_null(std::strstr(invariant_violation(mesh).c_str(), "vertex 6"));
+}
+
+void build_adjacency_matches_validation(void **)
+{
+    const TriMesh validated = cube();
+    TriMesh rebuilt;
+    rebuilt.pos = validated.pos;
+    rebuilt.tri = validated.tri;
+    build_adjacency(rebuilt);
+    assert_true(rebuilt.opp == validated.opp);
+    assert_true(rebuilt.v2h == validated.v2h);
+}
+
+} // namespace
+
+int main()
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(closed_mesh_has_every_twin),
+        cmocka_unit_test(one_ring_walk_visits_every_triangle_once),
+        cmocka_unit_test(boundary_vertices_start_at_their_boundary_halfedge),
+        cmocka_unit_test(checker_names_a_broken_twin),
+        cmocka_unit_test(checker_names_a_bad_vertex_halfedge),
+        cmocka_unit_test(checker_names_a_non_finite_position),
+        cmocka_unit_test(build_adjacency_matches_validation),
+    };
+    return cmocka_run_group_tests_name("unit_mesh", tests, nullptr, nullptr);
+}
