@@ -147,7 +147,8 @@ $(PLUGIN_TEST): tests/plugin/test_dlopen.c | deps
 
 check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(PLUGIN_TEST) $(SAN_TESTS)
 	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) \
-	  "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" $(SAN_TESTS)
+	  "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" \
+	  tests/install/test_install.sh $(SAN_TESTS)
 
 # ------------------------------------------------------------------ ABI
 # abidiff exit status is a bit set: 4 = the ABI changed (additions), 8 = an incompatible
@@ -156,8 +157,9 @@ check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(PLUGIN_TEST) $(
 ABI_BASELINE := tests/abi/libsurfadapt.abi
 abi-check: $(LIB_REAL)
 	@scripts/abi-check.sh $(LIB_REAL) $(ABI_BASELINE)
+# The script writes the baseline with the same abidw options it checks with.
 abi-baseline: $(LIB_REAL)
-	abidw --headers-dir include --no-corpus-path --out-file $(ABI_BASELINE) $(LIB_REAL)
+	@scripts/abi-check.sh --update $(LIB_REAL) $(ABI_BASELINE)
 
 # ------------------------------------------------------------------ benchmarks
 build/bench/%: bench/%.c $(TEST_SUPPORT_OBJ) $(LIB_SO) $(LIB_DEV)

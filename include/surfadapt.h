@@ -93,7 +93,7 @@ enum sfa_param {
     SFA_PARAM_SPLIT_LENGTH_RATIO = 6,
     /** s / l: relative-longness splitting (§4.1) only where the shortest edge of the
         incident triangles is at least s; > 0, default sqrt(psi_l/psi_u) =
-        tan(4 deg)/tan(15 deg) = 0.2611 (§4.3). */
+        tan(4 deg)/tan(15 deg) = 0.2610 (§4.3). */
     SFA_PARAM_SPLIT_SHORTEST_RATIO = 7,
     /** S / l: "absolute small triangle" contraction threshold (§4.2); > 0,
         default R = 0.5 (§4.3: S = R l). */
@@ -165,6 +165,8 @@ const char *sfa_version_string(void);
 int sfa_abi_version(void);
 
 /**
+ * Describes a status code.
+ * @param status a status code, usually one of ::sfa_status.
  * @return a static, never NULL description of a status code, e.g. "SFA_ERR_MESH: the
  *         mesh given is not acceptable"; unknown codes give "unknown status".
  */
@@ -180,10 +182,15 @@ const char *sfa_status_string(int status);
  */
 int sfa_create(sfa_surface **out);
 
-/** Frees a surface and everything it owns. NULL is a no-op. */
+/**
+ * Frees a surface and everything it owns.
+ * @param s the surface, invalid afterwards; NULL is a no-op.
+ */
 void sfa_destroy(sfa_surface *s);
 
 /**
+ * Why the last call on a surface failed.
+ * @param s the surface, or NULL.
  * @return a description of why the last call on `s` failed, naming the offending input
  *         (e.g. "triangle 17 uses vertex 2041, but there are 2000 vertices"), or "" after a
  *         successful call. Never NULL. Owned by `s`, valid until the next call on `s`.
@@ -222,6 +229,7 @@ int sfa_set_mesh(sfa_surface *s, int32_t nverts, const double *xyz, int32_t ntri
 
 /**
  * Current numbers of vertices and triangles (0 and 0 before any mesh is set).
+ * @param s      the surface.
  * @param nverts receives the vertex count (may be NULL if not wanted).
  * @param ntris  receives the triangle count (may be NULL if not wanted).
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (`s` is NULL).
@@ -231,6 +239,7 @@ int sfa_get_counts(const sfa_surface *s, int32_t *nverts, int32_t *ntris);
 /**
  * Copies the current mesh out: dense (no holes), in a deterministic order. Before any
  * sfa_adapt(), the order is that of the mesh set (less dropped unreferenced vertices).
+ * @param s             the surface.
  * @param vert_capacity number of vertices `xyz` has room for (it holds `3*vert_capacity` doubles).
  * @param xyz           receives `3*nverts` coordinates (owned by the caller).
  * @param tri_capacity  number of triangles `tris` has room for.
@@ -246,12 +255,17 @@ int sfa_get_mesh(const sfa_surface *s, int32_t vert_capacity, double *xyz, int32
 
 /**
  * Sets one parameter (see ::sfa_param for keys, units, ranges and defaults).
+ * @param s     the surface.
+ * @param key   one of ::sfa_param.
+ * @param value the new value, in the units of that key.
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL handle, unknown key, non-finite or out-of-range value).
  */
 int sfa_set_param(sfa_surface *s, int key, double value);
 
 /**
  * Reads one parameter.
+ * @param s     the surface.
+ * @param key   one of ::sfa_param.
  * @param value receives the value (owned by the caller).
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, unknown key).
  */
@@ -262,6 +276,7 @@ int sfa_get_param(const sfa_surface *s, int key, double *value);
 /**
  * Sets the velocity of every current vertex, used by sfa_move(). They stay set until
  * the next sfa_set_velocities() or sfa_set_mesh().
+ * @param s   the surface.
  * @param vel `3*nverts` velocity components, length units per time unit (read only, not kept).
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer), ::SFA_ERR_STATE (no mesh),
  *         ::SFA_ERR_NUMERIC (a non-finite component; names the vertex), ::SFA_ERR_MEMORY.
@@ -277,11 +292,13 @@ int sfa_set_velocities(sfa_surface *s, const double *vel);
  * cut to `dt_taken = min(dt, f * t_fold)` with f = ::SFA_PARAM_FOLD_SAFETY, t_fold the
  * earliest such root over all triangles. The host sub-steps with the rest (dt - dt_taken).
  *
+ * @param s        the surface.
  * @param dt       the step wanted, time units, finite and > 0.
  * @param dt_taken receives the step taken, 0 < *dt_taken <= dt.
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, dt not finite or <= 0),
- *         ::SFA_ERR_STATE (no mesh, or no velocities set), ::SFA_ERR_NUMERIC (the step
- *         that avoids folding is too small to change any coordinate), ::SFA_ERR_MEMORY.
+ *         ::SFA_ERR_STATE (no mesh, or no velocities set), ::SFA_ERR_NUMERIC (even the
+ *         largest safe step leaves a triangle flat or turned over once rounded: the fold is
+ *         closer than round-off resolves), ::SFA_ERR_MEMORY.
  */
 int sfa_move(sfa_surface *s, double dt, double *dt_taken);
 
@@ -293,6 +310,7 @@ int sfa_move(sfa_surface *s, double dt, double *dt_taken);
  * Connectivity and vertex count do not change; the velocities set by
  * sfa_set_velocities() are not touched.
  *
+ * @param s        the surface.
  * @param f        the velocity field (must not be NULL); must write finite values.
  * @param ctx      passed to `f` unchanged (may be NULL; never dereferenced by the library).
  * @param t        time at the start of the step.
@@ -309,6 +327,7 @@ int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t, double dt
  * Anisotropic vertex redistribution (paper §3.2): `iterations` Jacobi sweeps that move
  * vertices within their null space. Connectivity and vertex order do not change, so
  * host arrays stay valid.
+ * @param s          the surface.
  * @param iterations number of sweeps, >= 0.
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT, ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY,
  *         ::SFA_ERR_INTERNAL (in this release: "not implemented yet").
@@ -319,6 +338,7 @@ int sfa_smooth(sfa_surface *s, int32_t iterations);
  * The full adaptation (paper §3–§4): smoothing, anisotropic flipping, splitting and
  * contraction. Vertex and triangle counts may change: read the mesh back with
  * sfa_get_counts() and sfa_get_mesh().
+ * @param s the surface.
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT, ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY,
  *         ::SFA_ERR_INTERNAL (in this release: "not implemented yet").
  */
@@ -329,6 +349,7 @@ int sfa_adapt(sfa_surface *s);
 /**
  * Feature rank of every current vertex: 0 smooth, 1 ridge, 2 corner (boundary
  * vertices count as ridge or corner).
+ * @param s        the surface.
  * @param capacity number of `int32_t` that `ranks` has room for, >= nverts.
  * @param ranks    receives nverts ranks (owned by the caller).
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, capacity too small: nothing written),
@@ -338,6 +359,7 @@ int sfa_get_feature_ranks(const sfa_surface *s, int32_t capacity, int32_t *ranks
 
 /**
  * Measures the current surface.
+ * @param s        the surface.
  * @param quantity one of ::sfa_measure_quantity.
  * @param value    receives the value (owned by the caller).
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, unknown quantity), ::SFA_ERR_STATE (no mesh).
@@ -349,6 +371,7 @@ int sfa_measure(const sfa_surface *s, int quantity, double *value);
 /**
  * Attaches host data to the vertices: `ncomp` doubles per vertex, which follow every
  * operation that moves or creates vertices. Fields are dropped by sfa_set_mesh().
+ * @param s        the surface.
  * @param ncomp    components per vertex, >= 1.
  * @param values   `ncomp*nverts` values, `values[ncomp*i+c]` (read only, not kept); finite.
  * @param field_id receives the id of the field: 0 for the first field of a mesh, then 1, 2, ...
@@ -359,6 +382,7 @@ int sfa_add_field(sfa_surface *s, int32_t ncomp, const double *values, int32_t *
 
 /**
  * Copies a field's values on the current vertices out.
+ * @param s        the surface.
  * @param field_id an id from sfa_add_field().
  * @param capacity number of doubles `values` has room for, >= ncomp*nverts.
  * @param values   receives `ncomp*nverts` values (owned by the caller).
@@ -403,9 +427,11 @@ typedef struct sfa_api {
 } sfa_api;
 
 /**
- * The function table of ABI version `abi_version`, or NULL if this library does not
- * provide that version. The table is static and lives as long as the library is loaded.
- * A host that `dlopen`s `libsurfadapt.so.1` resolves this one symbol and nothing else.
+ * The function table of one ABI version. A host that `dlopen`s `libsurfadapt.so.1`
+ * resolves this one symbol and nothing else.
+ * @param abi_version the ABI version wanted, normally ::SFA_ABI_VERSION.
+ * @return the table (static, valid as long as the library is loaded), or NULL if this
+ *         library does not provide that version.
  */
 const sfa_api *sfa_get_api(uint32_t abi_version);
 

@@ -21,14 +21,21 @@ Step explicit_step(const TriMesh &mesh, const std::vector<Vec3> &velocity, doubl
     Step step;
     step.dt_taken = std::min(dt, safety * first_fold_time(mesh, velocity));
     step.positions = displaced(mesh.pos, velocity, step.dt_taken);
-    if (step.dt_taken < dt && step.positions == mesh.pos) {
-        char message[200];
-        std::snprintf(message, sizeof message,
-                      "the velocities fold a triangle at once: the largest safe step, %g, moves no vertex",
-                      step.dt_taken);
-        throw Error(Status::numeric, message);
-    }
+    require_no_fold(mesh, step.positions, step.dt_taken);
     return step;
+}
+
+void require_no_fold(const TriMesh &mesh, const std::vector<Vec3> &moved, double dt_taken)
+{
+    const int32_t folded = first_folded_triangle(mesh, moved);
+    if (folded < 0)
+        return;
+    char message[220];
+    std::snprintf(message, sizeof message,
+                  "the velocities fold triangle %d within round-off: even the largest safe step, %g, leaves it flat "
+                  "or turned over",
+                  folded, dt_taken);
+    throw Error(Status::numeric, message);
 }
 
 } // namespace sfa

@@ -14,10 +14,15 @@ struct Step {
 };
 
 // dt_taken = min(dt, safety * first fold time). Throws Error(Status::numeric) if that
-// step is too small to move any vertex.
+// step would still leave a triangle flat or folded once rounded (the fold is closer than
+// round-off can resolve).
 Step explicit_step(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double safety);
 
 // x + dt v for every vertex.
 std::vector<Vec3> displaced(const std::vector<Vec3> &pos, const std::vector<Vec3> &velocity, double dt);
+
+// Throws Error(Status::numeric) naming the first triangle that `moved` leaves flat or
+// folded: the analytic fold time is exact, the rounded positions need not be.
+void require_no_fold(const TriMesh &mesh, const std::vector<Vec3> &moved, double dt_taken);
 
 } // namespace sfa

@@ -24,6 +24,18 @@ double first_positive_root(double c0, double c1, double c2)
     return first;
 }
 
+int32_t first_folded_triangle(const TriMesh &mesh, const std::vector<Vec3> &moved)
+{
+    for (int32_t t = 0; t < mesh.num_triangles(); ++t) {
+        const Triangle &c = mesh.tri[t];
+        const Vec3 before = (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]);
+        const Vec3 after = (moved[c[1]] - moved[c[0]]).cross(moved[c[2]] - moved[c[0]]);
+        if (!(before.dot(after) > 0))
+            return t;
+    }
+    return -1;
+}
+
 double first_fold_time(const TriMesh &mesh, const std::vector<Vec3> &velocity)
 {
     double first = std::numeric_limits<double>::infinity();

@@ -13,6 +13,10 @@ namespace sfa {
 // triangle ever turns over along these velocities.
 double first_fold_time(const TriMesh &mesh, const std::vector<Vec3> &velocity);
 
+// The first triangle (0-based) whose normal at `moved` positions no longer points along
+// its normal at mesh.pos (flat or turned over, also by round-off), or -1 if none.
+int32_t first_folded_triangle(const TriMesh &mesh, const std::vector<Vec3> &moved);
+
 // The smallest positive root of c0 + c1 t + c2 t^2 with c0 > 0, or +infinity.
 double first_positive_root(double c0, double c1, double c2);
 

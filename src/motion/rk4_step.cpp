@@ -54,8 +54,7 @@ Step rk4_step(const TriMesh &mesh, const VelocityField &field, double t, double 
         const double allowed = safety * first_fold_time(mesh, velocity);
         if (h <= allowed) {
             Step step{displaced(mesh.pos, velocity, h), h};
-            if (h < dt && step.positions == mesh.pos)
-                break;
+            require_no_fold(mesh, step.positions, h);
             return step;
         }
         h = std::min(allowed, 0.9 * h); // a little below, so that the retries do not creep

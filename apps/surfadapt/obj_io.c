@@ -1,0 +1,322 @@
+#include "obj_io.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Growing arrays for what is read; counts stay within int32_t because the library's
+ * counts are int32_t. */
+typedef struct {
+    double *xyz;
+    int32_t *tris;
+    int64_t nverts, ntris, vcap, tcap;
+} builder;
+
+typedef struct {
+    const char *path;
+    char *err;
+    size_t err_len;
+    long line;
+} context;
+
+static int fail(const context *c, const char *fmt, ...)
+{
+    if (c->err && c->err_len) {
+        int n = snprintf(c->err, c->err_len, "%s:%ld: ", c->path, c->line);
+        if (n < 0)
+            n = 0;
+        if ((size_t)n < c->err_len) {
+            va_list ap;
+            va_start(ap, fmt);
+            vsnprintf(c->err + n, c->err_len - (size_t)n, fmt, ap);
+            va_end(ap);
+        }
+    }
+    return -1;
+}
+
+static int add_vertex(builder *b, const double p[3])
+{
+    if (b->nverts >= INT32_MAX)
+        return -1;
+    if (b->nverts == b->vcap) {
+        const int64_t cap = b->vcap ? 2 * b->vcap : 1024;
+        double *grown = realloc(b->xyz, sizeof(double) * 3 * (size_t)cap);
+        if (!grown)
+            return -1;
+        b->xyz = grown;
+        b->vcap = cap;
+    }
+    memcpy(b->xyz + 3 * b->nverts, p, sizeof(double) * 3);
+    ++b->nverts;
+    return 0;
+}
+
+static int add_triangle(builder *b, int32_t i, int32_t j, int32_t k)
+{
+    if (b->ntris >= INT32_MAX)
+        return -1;
+    if (b->ntris == b->tcap) {
+        const int64_t cap = b->tcap ? 2 * b->tcap : 2048;
+        int32_t *grown = realloc(b->tris, sizeof(int32_t) * 3 * (size_t)cap);
+        if (!grown)
+            return -1;
+        b->tris = grown;
+        b->tcap = cap;
+    }
+    int32_t *t = b->tris + 3 * b->ntris;
+    t[0] = i;
+    t[1] = j;
+    t[2] = k;
+    ++b->ntris;
+    return 0;
+}
+
+/* Whole file in memory, NUL-terminated: lines are then parsed in place without a
+ * line-length limit. */
+static char *slurp(const char *path, const context *c)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        fail(c, "cannot open: %s", strerror(errno));
+        return NULL;
+    }
+    size_t cap = 1 << 16, len = 0;
+    char *buf = malloc(cap);
+    while (buf) {
+        if (len + 1 >= cap) {
+            char *grown = realloc(buf, cap * 2);
+            if (!grown) {
+                free(buf);
+                buf = NULL;
+                break;
+            }
+            buf = grown;
+            cap *= 2;
+        }
+        const size_t got = fread(buf + len, 1, cap - 1 - len, f);
+        len += got;
+        if (got == 0)
+            break;
+    }
+    if (!buf)
+        fail(c, "out of memory");
+    else if (ferror(f)) {
+        fail(c, "read error");
+        free(buf);
+        buf = NULL;
+    } else
+        buf[len] = '\0';
+    fclose(f);
+    return buf;
+}
+
+static const char *skip_blanks(const char *p)
+{
+    while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\f' || *p == '\v')
+        ++p;
+    return p;
+}
+
+static int parse_double(const char **p, double *v)
+{
+    char *end;
+    const char *s = skip_blanks(*p);
+    errno = 0;
+    *v = strtod(s, &end);
+    if (end == s)
+        return -1;
+    /* Overflow gives +-HUGE_VAL: kept, because judging coordinates is the library's job;
+     * underflow to a denormal or zero is harmless. */
+    *p = end;
+    return 0;
+}
+
+static int parse_long(const char **p, long long *v)
+{
+    char *end;
+    const char *s = skip_blanks(*p);
+    errno = 0;
+    *v = strtoll(s, &end, 10);
+    if (end == s || errno == ERANGE)
+        return -1;
+    *p = end;
+    return 0;
+}
+
+/* One OBJ face corner `a`, `a/t`, `a//n` or `a/t/n`: the position index, made 0-based
+ * (negative indices count back from the last vertex read so far). */
+static int obj_corner(const char **p, int64_t nverts, int32_t *index)
+{
+    long long a;
+    if (parse_long(p, &a) != 0)
+        return -1;
+    while (**p && !isspace((unsigned char)**p))
+        ++*p; /* the texture and normal indices are not needed */
+    const long long zero_based = a < 0 ? (long long)nverts + a : a - 1;
+    if (zero_based < INT32_MIN || zero_based > INT32_MAX)
+        return -1;
+    *index = (int32_t)zero_based;
+    return 0;
+}
+
+static int read_obj(char *text, builder *b, context *c)
+{
+    char *line = text;
+    while (line) {
+        char *next = strchr(line, '\n');
+        if (next)
+            *next++ = '\0';
+        ++c->line;
+        const char *p = skip_blanks(line);
+        if (p[0] == 'v' && (p[1] == ' ' || p[1] == '\t')) {
+            double v[3];
+            ++p;
+            for (int k = 0; k < 3; ++k)
+                if (parse_double(&p, &v[k]) != 0)
+                    return fail(c, "vertex %lld: expected three coordinates", (long long)b->nverts + 1);
+            if (add_vertex(b, v) != 0)
+                return fail(c, "too many vertices or out of memory");
+        } else if (p[0] == 'f' && (p[1] == ' ' || p[1] == '\t')) {
+            int32_t first = 0, prev = 0, cur;
+            int corners = 0;
+            ++p;
+            for (;;) {
+                p = skip_blanks(p);
+                if (*p == '\0' || *p == '#')
+                    break;
+                if (obj_corner(&p, b->nverts, &cur) != 0)
+                    return fail(c, "face %lld: bad vertex index", (long long)b->ntris + 1);
+                if (corners == 0)
+                    first = cur;
+                else if (corners >= 2 && add_triangle(b, first, prev, cur) != 0)
+                    return fail(c, "too many triangles or out of memory");
+                prev = cur;
+                ++corners;
+            }
+            if (corners < 3)
+                return fail(c, "a face needs at least three vertices, this one has %d", corners);
+        }
+        line = next;
+    }
+    return 0;
+}
+
+/* The next token of an OFF file, skipping comments to the end of their line. */
+static const char *off_token(const char *p, context *c)
+{
+    for (;;) {
+        while (*p && isspace((unsigned char)*p)) {
+            if (*p == '\n')
+                ++c->line;
+            ++p;
+        }
+        if (*p != '#')
+            return p;
+        while (*p && *p != '\n')
+            ++p;
+    }
+}
+
+static int read_off(const char *text, builder *b, context *c)
+{
+    c->line = 1;
+    const char *p = off_token(text, c);
+    /* "OFF" and the variants with colours or normals, whose extra values per vertex are
+     * skipped with the rest of the vertex's line. */
+    if (strncmp(p, "NOFF", 4) == 0 || strncmp(p, "COFF", 4) == 0)
+        p += 4;
+    else if (strncmp(p, "OFF", 3) == 0)
+        p += 3;
+    else
+        return fail(c, "not an OFF file (no OFF header)");
+    long long nv, nf, ne;
+    p = off_token(p, c);
+    if (parse_long(&p, &nv) != 0 || (p = off_token(p, c), parse_long(&p, &nf)) != 0 ||
+        (p = off_token(p, c), parse_long(&p, &ne)) != 0 || nv < 0 || nf < 0 || nv > INT32_MAX)
+        return fail(c, "expected the counts of vertices, faces and edges");
+    for (long long i = 0; i < nv; ++i) {
+        double v[3];
+        for (int k = 0; k < 3; ++k)
+            if ((p = off_token(p, c), parse_double(&p, &v[k])) != 0)
+                return fail(c, "vertex %lld: expected three coordinates", i);
+        while (*p && *p != '\n')
+            ++p;
+        if (add_vertex(b, v) != 0)
+            return fail(c, "out of memory");
+    }
+    for (long long f = 0; f < nf; ++f) {
+        long long n, idx[3];
+        if ((p = off_token(p, c), parse_long(&p, &n)) != 0 || n < 3)
+            return fail(c, "face %lld: expected a vertex count of at least 3", f);
+        for (long long k = 0; k < n; ++k) {
+            long long v;
+            if ((p = off_token(p, c), parse_long(&p, &v)) != 0 || v < INT32_MIN || v > INT32_MAX)
+                return fail(c, "face %lld: bad vertex index", f);
+            if (k < 2)
+                idx[k] = v;
+            else {
+                idx[2] = v;
+                if (add_triangle(b, (int32_t)idx[0], (int32_t)idx[1], (int32_t)idx[2]) != 0)
+                    return fail(c, "too many triangles or out of memory");
+                idx[1] = v;
+            }
+        }
+        /* Per-face colours may follow on the same line: skip to its end. */
+        while (*p && *p != '\n')
+            ++p;
+    }
+    return 0;
+}
+
+static int is_off(const char *path, const char *text)
+{
+    const size_t n = strlen(path);
+    if (n >= 4 && path[n - 4] == '.' && tolower((unsigned char)path[n - 3]) == 'o' &&
+        tolower((unsigned char)path[n - 2]) == 'f' && tolower((unsigned char)path[n - 1]) == 'f')
+        return 1;
+    const char *p = text;
+    while (*p && isspace((unsigned char)*p))
+        ++p;
+    return strncmp(p, "OFF", 3) == 0 || strncmp(p, "COFF", 4) == 0 || strncmp(p, "NOFF", 4) == 0;
+}
+
+int mesh_read(const char *path, sfa_mesh_data *out, char *err, size_t err_len)
+{
+    context c = {path ? path : "(null)", err, err_len, 0};
+    if (err && err_len)
+        err[0] = '\0';
+    if (!out)
+        return fail(&c, "no output given");
+    memset(out, 0, sizeof *out);
+    if (!path)
+        return fail(&c, "no file name given");
+    char *text = slurp(path, &c);
+    if (!text)
+        return -1;
+    builder b = {0};
+    const int rc = is_off(path, text) ? read_off(text, &b, &c) : read_obj(text, &b, &c);
+    free(text);
+    if (rc != 0) {
+        free(b.xyz);
+        free(b.tris);
+        return -1;
+    }
+    out->nverts = (int32_t)b.nverts;
+    out->ntris = (int32_t)b.ntris;
+    out->xyz = b.xyz;
+    out->tris = b.tris;
+    return 0;
+}
+
+void mesh_free(sfa_mesh_data *m)
+{
+    if (!m)
+        return;
+    free(m->xyz);
+    free(m->tris);
+    memset(m, 0, sizeof *m);
+}

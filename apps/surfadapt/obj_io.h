@@ -1,0 +1,35 @@
+/* Reading triangle meshes from Wavefront OBJ and OFF files, for the command-line tool,
+ * the tests and the benchmarks. Not part of the library: the reader only parses; whether
+ * the mesh is acceptable is for sfa_set_mesh() to say, so nothing is dropped or checked. */
+#ifndef SURFADAPT_APP_OBJ_IO_H
+#define SURFADAPT_APP_OBJ_IO_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A mesh as read: 3*nverts coordinates and 3*ntris 0-based vertex indices, malloc'ed. */
+typedef struct sfa_mesh_data {
+    int32_t nverts, ntris;
+    double *xyz;
+    int32_t *tris;
+} sfa_mesh_data;
+
+/* Reads `path`: OFF if the file starts with an OFF header (or is named *.off), OBJ
+ * otherwise. OBJ: `v x y z` and `f a b c ...` lines (`a/t/n` and negative, relative
+ * indices accepted); polygons are fan-triangulated, other lines ignored. Indices are
+ * converted to 0-based and passed on as they are, even if out of range.
+ * Returns 0, or -1 with `*out` zeroed and a message in `err` (file and line). */
+int mesh_read(const char *path, sfa_mesh_data *out, char *err, size_t err_len);
+
+/* Frees the arrays of `m` and zeroes it; NULL and zeroed meshes are fine. */
+void mesh_free(sfa_mesh_data *m);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,368 @@
+!> Fortran binding of surfadapt (see include/surfadapt.h, the contract).
+!>
+!> Two layers:
+!>  - raw bind(C) interfaces, one per C function and under the same name, and every
+!>    constant of the header under the same name. A host passes its own (3,n) arrays
+!>    straight to the assumed-size dummies, e.g.
+!>        rc = sfa_set_mesh(s, nv, xyz, nt, tri, 1)
+!>    with xyz(3,nv) and tri(3,nt) holding 1-based vertex indices;
+!>  - a few wrappers with their own names (sfa_version, sfa_status_message,
+!>    sfa_error_message, sfa_get_mesh_alloc, sfa_get_field_alloc,
+!>    sfa_get_feature_ranks_alloc) that return Fortran strings and allocatable arrays.
+!>
+!> Handles are type(c_ptr): create with sfa_create, free with sfa_destroy. Units are the
+!> host's own, as in C. Status codes are integer(c_int), SFA_OK == 0.
+module surfadapt
+  use, intrinsic :: iso_c_binding, only: c_int, c_int32_t, c_int64_t, c_double, c_ptr, &
+       c_funptr, c_char, c_size_t, c_associated, c_f_pointer
+  implicit none
+  private
+
+  ! ------------------------------------------------------------------ versions
+  integer(c_int), parameter, public :: SFA_VERSION_MAJOR = 1
+  integer(c_int), parameter, public :: SFA_VERSION_MINOR = 0
+  integer(c_int), parameter, public :: SFA_VERSION_PATCH = 0
+  ! The header's SFA_ABI_VERSION, renamed: Fortran names are case-insensitive, so it
+  ! would clash with the function sfa_abi_version.
+  integer(c_int), parameter, public :: SFA_HEADER_ABI_VERSION = 1
+
+  ! ------------------------------------------------------------ enum sfa_status
+  integer(c_int), parameter, public :: SFA_OK = 0
+  integer(c_int), parameter, public :: SFA_ERR_ARGUMENT = 1
+  integer(c_int), parameter, public :: SFA_ERR_MESH = 2
+  integer(c_int), parameter, public :: SFA_ERR_STATE = 3
+  integer(c_int), parameter, public :: SFA_ERR_NUMERIC = 4
+  integer(c_int), parameter, public :: SFA_ERR_MEMORY = 5
+  integer(c_int), parameter, public :: SFA_ERR_INTERNAL = 6
+
+  ! ------------------------------------------------------------- enum sfa_param
+  ! Meanings, units and ranges: see enum sfa_param in surfadapt.h.
+  integer(c_int), parameter, public :: SFA_PARAM_EDGE_LENGTH = 0
+  integer(c_int), parameter, public :: SFA_PARAM_ANISOTROPIC = 1
+  integer(c_int), parameter, public :: SFA_PARAM_RIDGE_ANGLE = 2
+  integer(c_int), parameter, public :: SFA_PARAM_CORNER_ANGLE = 3
+  integer(c_int), parameter, public :: SFA_PARAM_METRIC_MIN_ANGLE = 4
+  integer(c_int), parameter, public :: SFA_PARAM_METRIC_MAX_ANGLE = 5
+  integer(c_int), parameter, public :: SFA_PARAM_SPLIT_LENGTH_RATIO = 6
+  integer(c_int), parameter, public :: SFA_PARAM_SPLIT_SHORTEST_RATIO = 7
+  integer(c_int), parameter, public :: SFA_PARAM_CONTRACT_LENGTH_RATIO = 8
+  integer(c_int), parameter, public :: SFA_PARAM_CONTRACT_SHORT_RATIO = 9
+  integer(c_int), parameter, public :: SFA_PARAM_CONTRACT_SMALL_RATIO = 10
+  integer(c_int), parameter, public :: SFA_PARAM_SMALL_ANGLE = 11
+  integer(c_int), parameter, public :: SFA_PARAM_LARGE_ANGLE = 12
+  integer(c_int), parameter, public :: SFA_PARAM_FOLD_SAFETY = 13
+  integer(c_int), parameter, public :: SFA_PARAM_DROP_UNREFERENCED = 14
+
+  ! --------------------------------------------------- enum sfa_measure_quantity
+  integer(c_int), parameter, public :: SFA_MEASURE_VOLUME = 0
+  integer(c_int), parameter, public :: SFA_MEASURE_AREA = 1
+  integer(c_int), parameter, public :: SFA_MEASURE_MIN_ANGLE = 2
+  integer(c_int), parameter, public :: SFA_MEASURE_MAX_ANGLE = 3
+  integer(c_int), parameter, public :: SFA_MEASURE_MEAN_EDGE_LENGTH = 4
+  integer(c_int), parameter, public :: SFA_MEASURE_MAX_ASPECT_RATIO = 5
+  integer(c_int), parameter, public :: SFA_MEASURE_MIN_EDGE_LENGTH = 6
+  integer(c_int), parameter, public :: SFA_MEASURE_MAX_EDGE_LENGTH = 7
+
+  public :: sfa_version_string, sfa_abi_version, sfa_status_string
+  public :: sfa_create, sfa_destroy, sfa_last_error
+  public :: sfa_set_mesh, sfa_get_counts, sfa_get_mesh
+  public :: sfa_set_param, sfa_get_param
+  public :: sfa_set_velocities, sfa_move, sfa_advect
+  public :: sfa_smooth, sfa_adapt
+  public :: sfa_get_feature_ranks, sfa_measure
+  public :: sfa_add_field, sfa_get_field
+  public :: sfa_get_api
+
+  public :: sfa_version, sfa_status_message, sfa_error_message
+  public :: sfa_get_mesh_alloc, sfa_get_field_alloc, sfa_get_feature_ranks_alloc
+
+  ! --------------------------------------------------------- raw C interfaces
+  ! Strings come back as type(c_ptr) because a bind(C) function cannot return a
+  ! character string; the wrappers convert them. The velocity callback given to
+  ! sfa_advect is c_funloc of a procedure with this interface:
+  !   subroutine velocity(ctx, n, xyz, t, vel) bind(C)
+  !     type(c_ptr), value :: ctx
+  !     integer(c_int32_t), value :: n
+  !     real(c_double), intent(in) :: xyz(3, n)
+  !     real(c_double), value :: t
+  !     real(c_double), intent(out) :: vel(3, n)
+  interface
+    !> "MAJOR.MINOR.PATCH", a static C string.
+    function sfa_version_string() bind(C, name='sfa_version_string')
+      import :: c_ptr
+      type(c_ptr) :: sfa_version_string
+    end function sfa_version_string
+
+    function sfa_abi_version() bind(C, name='sfa_abi_version')
+      import :: c_int
+      integer(c_int) :: sfa_abi_version
+    end function sfa_abi_version
+
+    !> A static, never null C string describing a status code.
+    function sfa_status_string(status) bind(C, name='sfa_status_string')
+      import :: c_int, c_ptr
+      integer(c_int), value :: status
+      type(c_ptr) :: sfa_status_string
+    end function sfa_status_string
+
+    function sfa_create(out) bind(C, name='sfa_create')
+      import :: c_int, c_ptr
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: sfa_create
+    end function sfa_create
+
+    subroutine sfa_destroy(s) bind(C, name='sfa_destroy')
+      import :: c_ptr
+      type(c_ptr), value :: s
+    end subroutine sfa_destroy
+
+    !> A C string owned by s, valid until the next call on s.
+    function sfa_last_error(s) bind(C, name='sfa_last_error')
+      import :: c_ptr
+      type(c_ptr), value :: s
+      type(c_ptr) :: sfa_last_error
+    end function sfa_last_error
+
+    function sfa_set_mesh(s, nverts, xyz, ntris, tris, index_base) bind(C, name='sfa_set_mesh')
+      import :: c_int, c_int32_t, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: nverts
+      real(c_double), intent(in) :: xyz(*)
+      integer(c_int32_t), value :: ntris
+      integer(c_int32_t), intent(in) :: tris(*)
+      integer(c_int32_t), value :: index_base
+      integer(c_int) :: sfa_set_mesh
+    end function sfa_set_mesh
+
+    function sfa_get_counts(s, nverts, ntris) bind(C, name='sfa_get_counts')
+      import :: c_int, c_int32_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), intent(out) :: nverts, ntris
+      integer(c_int) :: sfa_get_counts
+    end function sfa_get_counts
+
+    function sfa_get_mesh(s, vert_capacity, xyz, tri_capacity, tris, index_base) &
+         bind(C, name='sfa_get_mesh')
+      import :: c_int, c_int32_t, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: vert_capacity
+      real(c_double), intent(out) :: xyz(*)
+      integer(c_int32_t), value :: tri_capacity
+      integer(c_int32_t), intent(out) :: tris(*)
+      integer(c_int32_t), value :: index_base
+      integer(c_int) :: sfa_get_mesh
+    end function sfa_get_mesh
+
+    function sfa_set_param(s, key, value) bind(C, name='sfa_set_param')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int), value :: key
+      real(c_double), value :: value
+      integer(c_int) :: sfa_set_param
+    end function sfa_set_param
+
+    function sfa_get_param(s, key, value) bind(C, name='sfa_get_param')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int), value :: key
+      real(c_double), intent(out) :: value
+      integer(c_int) :: sfa_get_param
+    end function sfa_get_param
+
+    function sfa_set_velocities(s, vel) bind(C, name='sfa_set_velocities')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), intent(in) :: vel(*)
+      integer(c_int) :: sfa_set_velocities
+    end function sfa_set_velocities
+
+    function sfa_move(s, dt, dt_taken) bind(C, name='sfa_move')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), value :: dt
+      real(c_double), intent(out) :: dt_taken
+      integer(c_int) :: sfa_move
+    end function sfa_move
+
+    function sfa_advect(s, f, ctx, t, dt, dt_taken) bind(C, name='sfa_advect')
+      import :: c_int, c_double, c_ptr, c_funptr
+      type(c_ptr), value :: s
+      type(c_funptr), value :: f
+      type(c_ptr), value :: ctx
+      real(c_double), value :: t
+      real(c_double), value :: dt
+      real(c_double), intent(out) :: dt_taken
+      integer(c_int) :: sfa_advect
+    end function sfa_advect
+
+    function sfa_smooth(s, iterations) bind(C, name='sfa_smooth')
+      import :: c_int, c_int32_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: iterations
+      integer(c_int) :: sfa_smooth
+    end function sfa_smooth
+
+    function sfa_adapt(s) bind(C, name='sfa_adapt')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int) :: sfa_adapt
+    end function sfa_adapt
+
+    function sfa_get_feature_ranks(s, capacity, ranks) bind(C, name='sfa_get_feature_ranks')
+      import :: c_int, c_int32_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: capacity
+      integer(c_int32_t), intent(out) :: ranks(*)
+      integer(c_int) :: sfa_get_feature_ranks
+    end function sfa_get_feature_ranks
+
+    function sfa_measure(s, quantity, value) bind(C, name='sfa_measure')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int), value :: quantity
+      real(c_double), intent(out) :: value
+      integer(c_int) :: sfa_measure
+    end function sfa_measure
+
+    function sfa_add_field(s, ncomp, values, field_id) bind(C, name='sfa_add_field')
+      import :: c_int, c_int32_t, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: ncomp
+      real(c_double), intent(in) :: values(*)
+      integer(c_int32_t), intent(out) :: field_id
+      integer(c_int) :: sfa_add_field
+    end function sfa_add_field
+
+    function sfa_get_field(s, field_id, capacity, values) bind(C, name='sfa_get_field')
+      import :: c_int, c_int32_t, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: field_id
+      integer(c_int32_t), value :: capacity
+      real(c_double), intent(out) :: values(*)
+      integer(c_int) :: sfa_get_field
+    end function sfa_get_field
+
+    !> Pointer to the const sfa_api table, or c_null_ptr. The C argument is uint32_t;
+    !> Fortran has no unsigned kind, and int32_t is passed the same way for the values
+    !> that exist (small positive versions).
+    function sfa_get_api(abi_version) bind(C, name='sfa_get_api')
+      import :: c_int32_t, c_ptr
+      integer(c_int32_t), value :: abi_version
+      type(c_ptr) :: sfa_get_api
+    end function sfa_get_api
+  end interface
+
+  ! Only to measure C strings before copying them.
+  interface
+    function c_strlen(str) bind(C, name='strlen')
+      import :: c_ptr, c_size_t
+      type(c_ptr), value :: str
+      integer(c_size_t) :: c_strlen
+    end function c_strlen
+  end interface
+
+contains
+
+  ! Copies a NUL-terminated C string into a Fortran string; a null pointer gives "".
+  function from_c_string(p) result(str)
+    type(c_ptr), intent(in) :: p
+    character(len=:), allocatable :: str
+    character(kind=c_char), pointer :: chars(:)
+    integer :: n, i
+
+    if (.not. c_associated(p)) then
+      str = ''
+      return
+    end if
+    n = int(c_strlen(p))
+    call c_f_pointer(p, chars, [n])
+    allocate(character(len=n) :: str)
+    do i = 1, n
+      str(i:i) = chars(i)
+    end do
+  end function from_c_string
+
+  !> The library version, "MAJOR.MINOR.PATCH", as a Fortran string (a copy).
+  function sfa_version() result(str)
+    character(len=:), allocatable :: str
+    str = from_c_string(sfa_version_string())
+  end function sfa_version
+
+  !> Description of a status code, e.g. "SFA_ERR_MESH: ..." (a copy; never empty).
+  function sfa_status_message(status) result(str)
+    integer(c_int), intent(in) :: status
+    character(len=:), allocatable :: str
+    str = from_c_string(sfa_status_string(status))
+  end function sfa_status_message
+
+  !> Why the last call on s failed, naming the offending input in the index base the
+  !> host used; "" after a successful call. A copy, so it stays valid after further calls.
+  function sfa_error_message(s) result(str)
+    type(c_ptr), intent(in) :: s
+    character(len=:), allocatable :: str
+    str = from_c_string(sfa_last_error(s))
+  end function sfa_error_message
+
+  !> Copies the current mesh into newly allocated arrays xyz(3,nverts) (host length
+  !> units) and tris(3,ntris) (vertex indices in index_base, default 1 so that they
+  !> index xyz(:,i) directly). The arrays belong to the caller. Returns a status; on
+  !> failure both arrays are left unallocated and sfa_error_message(s) says why.
+  function sfa_get_mesh_alloc(s, xyz, tris, index_base) result(rc)
+    type(c_ptr), intent(in) :: s
+    real(c_double), allocatable, intent(out) :: xyz(:, :)
+    integer(c_int32_t), allocatable, intent(out) :: tris(:, :)
+    integer(c_int32_t), intent(in), optional :: index_base
+    integer(c_int) :: rc
+    integer(c_int32_t) :: nv, nt, base
+
+    base = 1
+    if (present(index_base)) base = index_base
+    rc = sfa_get_counts(s, nv, nt)
+    if (rc /= SFA_OK) return
+    allocate(xyz(3, nv), tris(3, nt))
+    rc = sfa_get_mesh(s, nv, xyz, nt, tris, base)
+    if (rc /= SFA_OK) deallocate(xyz, tris)
+  end function sfa_get_mesh_alloc
+
+  !> Copies field field_id (an id from sfa_add_field) into a newly allocated
+  !> values(ncomp,nverts), values(c,i) being component c of vertex i. The C API keeps no
+  !> record a host can query of a field's width, so ncomp must be the value given to
+  !> sfa_add_field. The array belongs to the caller. Returns a status; on failure values
+  !> is left unallocated. ncomp < 1, or a field too large for int32 capacities, gives
+  !> SFA_ERR_ARGUMENT without calling the library (sfa_error_message is then not updated).
+  function sfa_get_field_alloc(s, field_id, ncomp, values) result(rc)
+    type(c_ptr), intent(in) :: s
+    integer(c_int32_t), intent(in) :: field_id
+    integer(c_int32_t), intent(in) :: ncomp
+    real(c_double), allocatable, intent(out) :: values(:, :)
+    integer(c_int) :: rc
+    integer(c_int32_t) :: nv, nt
+
+    rc = sfa_get_counts(s, nv, nt)
+    if (rc /= SFA_OK) return
+    if (ncomp < 1 .or. int(ncomp, c_int64_t) * nv > huge(nv)) then
+      rc = SFA_ERR_ARGUMENT
+      return
+    end if
+    allocate(values(ncomp, nv))
+    rc = sfa_get_field(s, field_id, ncomp * nv, values)
+    if (rc /= SFA_OK) deallocate(values)
+  end function sfa_get_field_alloc
+
+  !> Feature rank of every current vertex in a newly allocated ranks(nverts):
+  !> 0 smooth, 1 ridge, 2 corner. The array belongs to the caller. Returns a status;
+  !> on failure ranks is left unallocated.
+  function sfa_get_feature_ranks_alloc(s, ranks) result(rc)
+    type(c_ptr), intent(in) :: s
+    integer(c_int32_t), allocatable, intent(out) :: ranks(:)
+    integer(c_int) :: rc
+    integer(c_int32_t) :: nv, nt
+
+    rc = sfa_get_counts(s, nv, nt)
+    if (rc /= SFA_OK) return
+    allocate(ranks(nv))
+    rc = sfa_get_feature_ranks(s, nv, ranks)
+    if (rc /= SFA_OK) deallocate(ranks)
+  end function sfa_get_feature_ranks_alloc
+
+end module surfadapt

@@ -1,0 +1,272 @@
+#include "support/shapes.h"
+
+#include "icosphere.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Test support: running out of memory here is not what is being tested. */
+static void *xmalloc(size_t n)
+{
+    void *p = malloc(n ? n : 1);
+    if (!p) {
+        fputs("test support: out of memory\n", stderr);
+        abort();
+    }
+    return p;
+}
+
+static sfa_mesh_data mesh_alloc(int32_t nverts, int32_t ntris)
+{
+    sfa_mesh_data m;
+    m.nverts = nverts;
+    m.ntris = ntris;
+    m.xyz = xmalloc(sizeof(double) * 3 * (size_t)nverts);
+    m.tris = xmalloc(sizeof(int32_t) * 3 * (size_t)ntris);
+    return m;
+}
+
+sfa_mesh_data shape_unit_cube(void)
+{
+    static const double xyz[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                     {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+    static const int32_t tris[12][3] = {{0, 2, 1}, {0, 3, 2},  /* z = 0 */
+                                        {4, 5, 6}, {4, 6, 7},  /* z = 1 */
+                                        {0, 1, 5}, {0, 5, 4},  /* y = 0 */
+                                        {3, 7, 6}, {3, 6, 2},  /* y = 1 */
+                                        {0, 4, 7}, {0, 7, 3},  /* x = 0 */
+                                        {1, 2, 6}, {1, 6, 5}}; /* x = 1 */
+    sfa_mesh_data m = mesh_alloc(8, 12);
+    memcpy(m.xyz, xyz, sizeof xyz);
+    memcpy(m.tris, tris, sizeof tris);
+    return m;
+}
+
+sfa_mesh_data shape_box(int n, const double lo[3], const double hi[3])
+{
+    const int32_t side = n + 1;
+    int32_t *id = xmalloc(sizeof(int32_t) * (size_t)side * (size_t)side * (size_t)side);
+    for (int32_t i = 0; i < side * side * side; ++i)
+        id[i] = -1;
+    sfa_mesh_data m = mesh_alloc(6 * n * n + 2, 12 * n * n);
+    int32_t nv = 0, nt = 0;
+    for (int a = 0; a < 3; ++a) {
+        /* (u, v, a) is a cyclic permutation, so e_u x e_v = e_a: a cell counter-clockwise in
+         * (u, v) faces +e_a, which is outward on the side coordinate[a] = n. */
+        const int u = (a + 1) % 3, v = (a + 2) % 3;
+        for (int s = 0; s <= n; s += n) {
+            int32_t corner[2][2];
+            for (int i = 0; i < n; ++i)
+                for (int j = 0; j < n; ++j) {
+                    for (int di = 0; di < 2; ++di)
+                        for (int dj = 0; dj < 2; ++dj) {
+                            int c[3];
+                            c[a] = s;
+                            c[u] = i + di;
+                            c[v] = j + dj;
+                            int32_t *slot = &id[(c[0] * side + c[1]) * side + c[2]];
+                            if (*slot < 0) {
+                                *slot = nv++;
+                                for (int k = 0; k < 3; ++k)
+                                    m.xyz[3 * *slot + k] = lo[k] + (hi[k] - lo[k]) * c[k] / n;
+                            }
+                            corner[di][dj] = *slot;
+                        }
+                    const int32_t p00 = corner[0][0], p10 = corner[1][0], p11 = corner[1][1], p01 = corner[0][1];
+                    const int32_t up[6] = {p00, p10, p11, p00, p11, p01};
+                    const int32_t down[6] = {p00, p11, p10, p00, p01, p11};
+                    memcpy(m.tris + 3 * nt, s == n ? up : down, sizeof up);
+                    nt += 2;
+                }
+            if (n == 0)
+                break;
+        }
+    }
+    free(id);
+    m.nverts = nv;
+    m.ntris = nt;
+    return m;
+}
+
+sfa_mesh_data shape_icosphere(int k, double r)
+{
+    const double center[3] = {0, 0, 0};
+    sfa_mesh_data m;
+    if (icosphere(k, r, center, &m.nverts, &m.xyz, &m.ntris, &m.tris) != 0) {
+        fputs("test support: icosphere failed\n", stderr);
+        abort();
+    }
+    return m;
+}
+
+sfa_mesh_data shape_icosahedron(double r) { return shape_icosphere(0, r); }
+
+sfa_mesh_data shape_grid(int nx, int ny, double h)
+{
+    sfa_mesh_data m = mesh_alloc((nx + 1) * (ny + 1), 2 * nx * ny);
+    for (int j = 0; j <= ny; ++j)
+        for (int i = 0; i <= nx; ++i) {
+            double *p = m.xyz + 3 * (j * (nx + 1) + i);
+            p[0] = i * h;
+            p[1] = j * h;
+            p[2] = 0;
+        }
+    int32_t *t = m.tris;
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const int32_t p00 = j * (nx + 1) + i, p10 = p00 + 1, p01 = p00 + nx + 1, p11 = p01 + 1;
+            const int32_t two[6] = {p00, p10, p11, p00, p11, p01};
+            memcpy(t, two, sizeof two);
+            t += 6;
+        }
+    return m;
+}
+
+sfa_mesh_data mesh_copy(const sfa_mesh_data *m)
+{
+    sfa_mesh_data c = mesh_alloc(m->nverts, m->ntris);
+    memcpy(c.xyz, m->xyz, sizeof(double) * 3 * (size_t)m->nverts);
+    memcpy(c.tris, m->tris, sizeof(int32_t) * 3 * (size_t)m->ntris);
+    return c;
+}
+
+void mesh_reverse(sfa_mesh_data *m)
+{
+    for (int32_t t = 0; t < m->ntris; ++t) {
+        const int32_t swap = m->tris[3 * t + 1];
+        m->tris[3 * t + 1] = m->tris[3 * t + 2];
+        m->tris[3 * t + 2] = swap;
+    }
+}
+
+void mesh_translate(sfa_mesh_data *m, const double d[3])
+{
+    for (int32_t v = 0; v < m->nverts; ++v)
+        for (int k = 0; k < 3; ++k)
+            m->xyz[3 * v + k] += d[k];
+}
+
+void mesh_append(sfa_mesh_data *a, const sfa_mesh_data *b)
+{
+    sfa_mesh_data c = mesh_alloc(a->nverts + b->nverts, a->ntris + b->ntris);
+    memcpy(c.xyz, a->xyz, sizeof(double) * 3 * (size_t)a->nverts);
+    memcpy(c.xyz + 3 * a->nverts, b->xyz, sizeof(double) * 3 * (size_t)b->nverts);
+    memcpy(c.tris, a->tris, sizeof(int32_t) * 3 * (size_t)a->ntris);
+    for (int32_t i = 0; i < 3 * b->ntris; ++i)
+        c.tris[3 * a->ntris + i] = b->tris[i] + a->nverts;
+    mesh_free(a);
+    *a = c;
+}
+
+sfa_surface *surface_from(const sfa_mesh_data *m, int base, char *err, size_t err_len)
+{
+    sfa_surface *s = NULL;
+    if (err && err_len)
+        err[0] = '\0';
+    if (sfa_create(&s) != SFA_OK) {
+        if (err && err_len)
+            snprintf(err, err_len, "sfa_create failed");
+        return NULL;
+    }
+    int32_t *tris = xmalloc(sizeof(int32_t) * 3 * (size_t)m->ntris);
+    for (int32_t i = 0; i < 3 * m->ntris; ++i)
+        tris[i] = m->tris[i] + base;
+    const int rc = sfa_set_mesh(s, m->nverts, m->xyz, m->ntris, tris, base);
+    free(tris);
+    if (rc != SFA_OK) {
+        if (err && err_len)
+            snprintf(err, err_len, "%s", sfa_last_error(s));
+        sfa_destroy(s);
+        return NULL;
+    }
+    return s;
+}
+
+/* The pattern unwritten buffer space keeps, so that a getter writing more (or less)
+ * than before shows up as a difference. */
+#define SNAPSHOT_FILL 0xA5
+
+void snapshot_take(const sfa_surface *s, snapshot *out)
+{
+    memset(out, 0, sizeof *out);
+    out->counts_status = sfa_get_counts(s, &out->nverts, &out->ntris);
+    const int32_t nv = out->nverts > 0 ? out->nverts : 0, nt = out->ntris > 0 ? out->ntris : 0;
+    out->xyz = xmalloc(sizeof(double) * 3 * (size_t)nv);
+    out->tris = xmalloc(sizeof(int32_t) * 3 * (size_t)nt);
+    memset(out->xyz, SNAPSHOT_FILL, sizeof(double) * 3 * (size_t)nv);
+    memset(out->tris, SNAPSHOT_FILL, sizeof(int32_t) * 3 * (size_t)nt);
+    out->mesh_status = sfa_get_mesh(s, nv, out->xyz, nt, out->tris, 0);
+    for (int k = 0; k < SHAPES_NPARAMS; ++k) {
+        memset(&out->params[k], SNAPSHOT_FILL, sizeof(double));
+        out->param_status[k] = sfa_get_param(s, k, &out->params[k]);
+    }
+    const size_t cap = (size_t)SNAPSHOT_MAX_NCOMP * (size_t)nv;
+    for (int f = 0; f < SNAPSHOT_MAX_FIELDS; ++f) {
+        out->fields[f] = xmalloc(sizeof(double) * cap);
+        memset(out->fields[f], SNAPSHOT_FILL, sizeof(double) * cap);
+        out->field_status[f] = sfa_get_field(s, f, (int32_t)cap, out->fields[f]);
+    }
+}
+
+void snapshot_free(snapshot *snap)
+{
+    free(snap->xyz);
+    free(snap->tris);
+    for (int f = 0; f < SNAPSHOT_MAX_FIELDS; ++f)
+        free(snap->fields[f]);
+    memset(snap, 0, sizeof *snap);
+}
+
+int snapshot_equal(const snapshot *a, const snapshot *b, char *why, size_t why_len)
+{
+#define DIFFERS(...)                                                                                                   \
+    do {                                                                                                               \
+        if (why && why_len)                                                                                            \
+            snprintf(why, why_len, __VA_ARGS__);                                                                       \
+        return 0;                                                                                                      \
+    } while (0)
+    if (a->counts_status != b->counts_status || a->nverts != b->nverts || a->ntris != b->ntris)
+        DIFFERS("counts: status %d, %d vertices, %d triangles before; status %d, %d vertices, %d triangles after",
+                a->counts_status, (int)a->nverts, (int)a->ntris, b->counts_status, (int)b->nverts, (int)b->ntris);
+    const size_t nv = a->nverts > 0 ? (size_t)a->nverts : 0, nt = a->ntris > 0 ? (size_t)a->ntris : 0;
+    if (a->mesh_status != b->mesh_status)
+        DIFFERS("sfa_get_mesh status %d before, %d after", a->mesh_status, b->mesh_status);
+    for (size_t i = 0; i < 3 * nv; ++i)
+        if (memcmp(&a->xyz[i], &b->xyz[i], sizeof(double)) != 0)
+            DIFFERS("coordinate %zu of vertex %zu: %.17g before, %.17g after", i % 3, i / 3, a->xyz[i], b->xyz[i]);
+    for (size_t i = 0; i < 3 * nt; ++i)
+        if (a->tris[i] != b->tris[i])
+            DIFFERS("corner %zu of triangle %zu: vertex %d before, %d after", i % 3, i / 3, (int)a->tris[i],
+                    (int)b->tris[i]);
+    for (int k = 0; k < SHAPES_NPARAMS; ++k)
+        if (a->param_status[k] != b->param_status[k] || memcmp(&a->params[k], &b->params[k], sizeof(double)) != 0)
+            DIFFERS("parameter %d: %.17g (status %d) before, %.17g (status %d) after", k, a->params[k],
+                    a->param_status[k], b->params[k], b->param_status[k]);
+    const size_t cap = (size_t)SNAPSHOT_MAX_NCOMP * nv;
+    for (int f = 0; f < SNAPSHOT_MAX_FIELDS; ++f) {
+        if (a->field_status[f] != b->field_status[f])
+            DIFFERS("field %d: sfa_get_field status %d before, %d after", f, a->field_status[f], b->field_status[f]);
+        for (size_t i = 0; i < cap; ++i)
+            if (memcmp(&a->fields[f][i], &b->fields[f][i], sizeof(double)) != 0)
+                DIFFERS("field %d, value %zu: %.17g before, %.17g after", f, i, a->fields[f][i], b->fields[f][i]);
+    }
+#undef DIFFERS
+    return 1;
+}
+
+const char *data_dir(void)
+{
+    const char *dir = getenv("SFA_DATA_DIR");
+    return dir && *dir ? dir : "../shared/data";
+}
+
+int data_file(const char *name, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s/%s", data_dir(), name);
+    FILE *f = fopen(buf, "rb");
+    if (!f)
+        return 0;
+    fclose(f);
+    return 1;
+}

@@ -1,0 +1,139 @@
+/* CMocka helpers for the C tests. Header-only (static inline) because the objects in
+ * support/ are also linked into the benchmarks, which do not link CMocka. */
+#ifndef SURFADAPT_TEST_TESTING_H
+#define SURFADAPT_TEST_TESTING_H
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "support/shapes.h"
+#include "surfadapt.h"
+
+/* A surface holding m (in index base `base`); fails the test if the library refuses it. */
+static inline sfa_surface *make_surface(const sfa_mesh_data *m, int base)
+{
+    char err[512];
+    sfa_surface *s = surface_from(m, base, err, sizeof err);
+    if (!s)
+        fail_msg("the library refused a generated mesh: %s", err);
+    return s;
+}
+
+/* A surface holding the unit cube. */
+static inline sfa_surface *make_cube_surface(void)
+{
+    sfa_mesh_data cube = shape_unit_cube();
+    sfa_surface *s = make_surface(&cube, 0);
+    mesh_free(&cube);
+    return s;
+}
+
+static inline void assert_same_snapshot(const snapshot *before, const snapshot *after)
+{
+    char why[256];
+    if (!snapshot_equal(before, after, why, sizeof why))
+        fail_msg("the surface changed: %s", why);
+}
+
+/* Whether `text` contains `phrase` as whole numbers: a phrase ending (starting) in a digit
+ * must not be followed (preceded) by another digit there ("vertex 5" is not found in
+ * "vertex 51", "12" not in "112"). */
+static inline int contains_phrase(const char *text, const char *phrase)
+{
+#define IS_DIGIT_(c) ((c) >= '0' && (c) <= '9')
+    const size_t n = strlen(phrase);
+    if (n == 0)
+        return 1;
+    for (const char *p = strstr(text, phrase); p; p = strstr(p + 1, phrase))
+        if (!(IS_DIGIT_(phrase[n - 1]) && IS_DIGIT_(p[n])) && !(IS_DIGIT_(phrase[0]) && p > text && IS_DIGIT_(p[-1])))
+            return 1;
+    return 0;
+#undef IS_DIGIT_
+}
+
+/* The status is `expected` and sfa_last_error() contains every one of the NULL-terminated
+ * phrases (so a test asserts the stable parts of a message, not its wording). */
+static inline void assert_error_(const sfa_surface *s, int rc, int expected, const char *const *phrases,
+                                 const char *file, int line)
+{
+    const char *msg = sfa_last_error(s);
+    if (!msg)
+        fail_msg("%s:%d: sfa_last_error returned NULL", file, line);
+    if (rc != expected)
+        fail_msg("%s:%d: status %d (%s), expected %d (%s); message: \"%s\"", file, line, rc, sfa_status_string(rc),
+                 expected, sfa_status_string(expected), msg);
+    for (const char *const *p = phrases; *p; ++p)
+        if (!contains_phrase(msg, *p))
+            fail_msg("%s:%d: the message \"%s\" does not contain \"%s\"", file, line, msg, *p);
+    if (expected != SFA_OK && msg[0] == '\0')
+        fail_msg("%s:%d: status %d with an empty message", file, line, rc);
+}
+#define assert_error(s, rc, expected, ...)                                                                            \
+    do {                                                                                                               \
+        const char *const phrases_[] = {__VA_ARGS__, NULL};                                                            \
+        assert_error_((s), (rc), (expected), phrases_, __FILE__, __LINE__);                                            \
+    } while (0)
+
+/* SFA_OK, and the message is then "". */
+#define assert_ok(s, rc)                                                                                               \
+    do {                                                                                                               \
+        const int rc_ = (rc);                                                                                          \
+        if (rc_ != SFA_OK)                                                                                             \
+            fail_msg("%s:%d: status %d (%s): \"%s\"", __FILE__, __LINE__, rc_, sfa_status_string(rc_),                 \
+                     sfa_last_error(s));                                                                               \
+        assert_string_equal(sfa_last_error(s), "");                                                                    \
+    } while (0)
+
+/* |a - b| <= tol, with both values in the failure message. */
+#define assert_near(a, b, tol)                                                                                         \
+    do {                                                                                                               \
+        const double a_ = (a), b_ = (b), t_ = (tol);                                                                   \
+        if (!(fabs(a_ - b_) <= t_))                                                                                    \
+            fail_msg("%s:%d: %s = %.17g, expected %.17g within %.3g (off by %.3g)", __FILE__, __LINE__, #a, a_, b_,     \
+                     t_, a_ - b_);                                                                                     \
+    } while (0)
+
+/* Reads a real mesh from the data directory, or skips the test if it is not there. */
+static inline void read_data_or_skip(const char *name, sfa_mesh_data *m)
+{
+    char path[1024], err[1024];
+    if (!data_file(name, path, sizeof path)) {
+        print_message("%s not found (set SFA_DATA_DIR): skipped\n", path);
+        skip();
+    }
+    if (mesh_read(path, m, err, sizeof err) != 0)
+        fail_msg("cannot read %s: %s", path, err);
+}
+
+static inline double measure(const sfa_surface *s, int quantity)
+{
+    double value = NAN;
+    const int rc = sfa_measure(s, quantity, &value);
+    if (rc != SFA_OK)
+        fail_msg("sfa_measure(%d): status %d: %s", quantity, rc, sfa_last_error(s));
+    return value;
+}
+
+/* The current mesh, 0-based. */
+static inline sfa_mesh_data read_back(const sfa_surface *s)
+{
+    sfa_mesh_data m;
+    assert_int_equal(sfa_get_counts(s, &m.nverts, &m.ntris), SFA_OK);
+    m.xyz = malloc(sizeof(double) * 3 * (size_t)(m.nverts ? m.nverts : 1));
+    m.tris = malloc(sizeof(int32_t) * 3 * (size_t)(m.ntris ? m.ntris : 1));
+    assert_non_null(m.xyz);
+    assert_non_null(m.tris);
+    assert_int_equal(sfa_get_mesh(s, m.nverts, m.xyz, m.ntris, m.tris, 0), SFA_OK);
+    return m;
+}
+
+#endif

@@ -1,0 +1,147 @@
+/* sfa_measure on shapes whose answers are known in closed form. */
+#include "support/testing.h"
+
+static const double pi = 3.14159265358979323846;
+
+static void unit_cube(void **state)
+{
+    (void)state;
+    sfa_surface *s = make_cube_surface();
+    /* Integer coordinates make every triple product an integer: the sum is exact. */
+    assert_true(measure(s, SFA_MEASURE_VOLUME) == 1.0);
+    assert_near(measure(s, SFA_MEASURE_AREA), 6.0, 1e-15);
+    assert_near(measure(s, SFA_MEASURE_MIN_ANGLE), 45.0, 1e-12);
+    assert_near(measure(s, SFA_MEASURE_MAX_ANGLE), 90.0, 1e-12);
+    /* 18 edges: the 12 of the cube and the 6 face diagonals. */
+    assert_near(measure(s, SFA_MEASURE_MEAN_EDGE_LENGTH), (12 + 6 * sqrt(2.0)) / 18, 1e-15);
+    assert_near(measure(s, SFA_MEASURE_MIN_EDGE_LENGTH), 1.0, 1e-15);
+    assert_near(measure(s, SFA_MEASURE_MAX_EDGE_LENGTH), sqrt(2.0), 1e-15);
+    /* Right isosceles triangle with legs 1: R = sqrt(2)/2, r = (2 - sqrt(2))/2,
+     * R / (2 r) = (1 + sqrt(2)) / 2. */
+    assert_near(measure(s, SFA_MEASURE_MAX_ASPECT_RATIO), (1 + sqrt(2.0)) / 2, 1e-12);
+    sfa_destroy(s);
+}
+
+static void icosahedron(void **state)
+{
+    (void)state;
+    sfa_mesh_data ico = shape_icosahedron(1.0);
+    sfa_surface *s = make_surface(&ico, 0);
+    const double a = 1 / sin(2 * pi / 5); /* edge of the icosahedron of circumradius 1 */
+    const double volume = 5.0 / 12.0 * (3 + sqrt(5.0)) * a * a * a;
+    assert_near(measure(s, SFA_MEASURE_VOLUME), volume, 1e-12 * volume);
+    assert_near(measure(s, SFA_MEASURE_AREA), 5 * sqrt(3.0) * a * a, 1e-12);
+    assert_near(measure(s, SFA_MEASURE_MIN_ANGLE), 60.0, 1e-12);
+    assert_near(measure(s, SFA_MEASURE_MAX_ANGLE), 60.0, 1e-12);
+    assert_near(measure(s, SFA_MEASURE_MEAN_EDGE_LENGTH), a, 1e-12);
+    assert_near(measure(s, SFA_MEASURE_MIN_EDGE_LENGTH), a, 1e-12);
+    assert_near(measure(s, SFA_MEASURE_MAX_EDGE_LENGTH), a, 1e-12);
+    assert_near(measure(s, SFA_MEASURE_MAX_ASPECT_RATIO), 1.0, 1e-12);
+    sfa_destroy(s);
+    mesh_free(&ico);
+}
+
+static void translated_cube(void **state)
+{
+    (void)state;
+    const double shifts[2][3] = {{10.5, -20.25, 3.125}, {0.1, 0.2, 0.3}};
+    for (int i = 0; i < 2; ++i) {
+        sfa_mesh_data cube = shape_unit_cube();
+        mesh_translate(&cube, shifts[i]);
+        sfa_surface *s = make_surface(&cube, 0);
+        assert_near(measure(s, SFA_MEASURE_VOLUME), 1.0, 1e-12);
+        assert_near(measure(s, SFA_MEASURE_AREA), 6.0, 1e-12);
+        sfa_destroy(s);
+        mesh_free(&cube);
+    }
+}
+
+static void reversed_cube(void **state)
+{
+    (void)state;
+    sfa_mesh_data cube = shape_unit_cube();
+    mesh_reverse(&cube);
+    sfa_surface *s = make_surface(&cube, 0);
+    assert_true(measure(s, SFA_MEASURE_VOLUME) == -1.0);
+    assert_near(measure(s, SFA_MEASURE_AREA), 6.0, 1e-15);
+    sfa_destroy(s);
+    mesh_free(&cube);
+}
+
+static void icosphere_matches_tetrahedra(void **state)
+{
+    (void)state;
+    sfa_mesh_data sphere = shape_icosphere(3, 1.7);
+    sfa_surface *s = make_surface(&sphere, 0);
+    double volume = 0, area = 0;
+    for (int32_t t = 0; t < sphere.ntris; ++t) {
+        const double *a = sphere.xyz + 3 * sphere.tris[3 * t], *b = sphere.xyz + 3 * sphere.tris[3 * t + 1],
+                     *c = sphere.xyz + 3 * sphere.tris[3 * t + 2];
+        volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) +
+                   a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        area += sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / 2;
+    }
+    assert_near(measure(s, SFA_MEASURE_VOLUME), volume, 1e-12 * volume);
+    assert_near(measure(s, SFA_MEASURE_AREA), area, 1e-12 * area);
+    /* Inscribed in the sphere: a little less than its volume and area. */
+    const double r = 1.7;
+    assert_true(volume < 4.0 / 3.0 * pi * r * r * r && volume > 0.98 * 4.0 / 3.0 * pi * r * r * r);
+    assert_true(area < 4 * pi * r * r && area > 0.98 * 4 * pi * r * r);
+    sfa_destroy(s);
+    mesh_free(&sphere);
+}
+
+static void open_flat_patch(void **state)
+{
+    (void)state;
+    sfa_mesh_data grid = shape_grid(4, 2, 0.25);
+    sfa_surface *s = make_surface(&grid, 0);
+    assert_true(measure(s, SFA_MEASURE_VOLUME) == 0.0); /* every vertex has z = 0 */
+    assert_near(measure(s, SFA_MEASURE_AREA), 0.5, 1e-15);
+    assert_near(measure(s, SFA_MEASURE_MIN_ANGLE), 45.0, 1e-12);
+    assert_near(measure(s, SFA_MEASURE_MAX_ANGLE), 90.0, 1e-12);
+    assert_near(measure(s, SFA_MEASURE_MIN_EDGE_LENGTH), 0.25, 1e-15);
+    assert_near(measure(s, SFA_MEASURE_MAX_EDGE_LENGTH), 0.25 * sqrt(2.0), 1e-15);
+    /* 4x2 cells: 5*2 + 3*4 = 22 axis edges and 8 diagonals. */
+    assert_near(measure(s, SFA_MEASURE_MEAN_EDGE_LENGTH), 0.25 * (22 + 8 * sqrt(2.0)) / 30, 1e-15);
+    sfa_destroy(s);
+    mesh_free(&grid);
+}
+
+static void bad_arguments_and_state(void **state)
+{
+    (void)state;
+    sfa_surface *s = make_cube_surface();
+    double v = 77;
+    const int unknown[] = {-1, 8, 1000, INT32_MIN};
+    for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; ++i) {
+        assert_error(s, sfa_measure(s, unknown[i], &v), SFA_ERR_ARGUMENT, "");
+        assert_true(v == 77);
+    }
+    assert_error(s, sfa_measure(s, SFA_MEASURE_VOLUME, NULL), SFA_ERR_ARGUMENT, "");
+    assert_int_equal(sfa_measure(NULL, SFA_MEASURE_VOLUME, &v), SFA_ERR_ARGUMENT);
+    sfa_destroy(s);
+
+    assert_int_equal(sfa_create(&s), SFA_OK);
+    for (int q = SFA_MEASURE_VOLUME; q <= SFA_MEASURE_MAX_EDGE_LENGTH; ++q) {
+        assert_error(s, sfa_measure(s, q, &v), SFA_ERR_STATE, "");
+        assert_true(v == 77);
+    }
+    sfa_destroy(s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(unit_cube),
+        cmocka_unit_test(icosahedron),
+        cmocka_unit_test(translated_cube),
+        cmocka_unit_test(reversed_cube),
+        cmocka_unit_test(icosphere_matches_tetrahedra),
+        cmocka_unit_test(open_flat_patch),
+        cmocka_unit_test(bad_arguments_and_state),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,78 @@
+/* sfa_smooth, sfa_adapt and sfa_get_feature_ranks check their arguments and state like
+ * every other function, then report SFA_ERR_INTERNAL "not implemented yet" and leave the
+ * surface alone. These assertions change when the algorithms land. */
+#include "support/testing.h"
+
+#define SENTINEL_BYTE 0x5A
+
+/* Calls `call` on a loaded cube and checks the outcome and that nothing changed. */
+#define expect_on_cube(call, expected, ...)                                                                            \
+    do {                                                                                                               \
+        sfa_surface *s = make_cube_surface();                                                                          \
+        double f_[8] = {1, 2, 3, 4, 5, 6, 7, 8};                                                                       \
+        int32_t id_;                                                                                                   \
+        assert_int_equal(sfa_add_field(s, 1, f_, &id_), SFA_OK);                                                       \
+        snapshot before_, after_;                                                                                      \
+        snapshot_take(s, &before_);                                                                                    \
+        const int rc_ = (call);                                                                                        \
+        assert_error(s, rc_, (expected), __VA_ARGS__);                                                                 \
+        snapshot_take(s, &after_);                                                                                     \
+        assert_same_snapshot(&before_, &after_);                                                                       \
+        snapshot_free(&before_);                                                                                       \
+        snapshot_free(&after_);                                                                                        \
+        sfa_destroy(s);                                                                                                \
+    } while (0)
+
+static void smooth(void **state)
+{
+    (void)state;
+    assert_int_equal(sfa_smooth(NULL, 1), SFA_ERR_ARGUMENT);
+    expect_on_cube(sfa_smooth(s, -1), SFA_ERR_ARGUMENT, "");
+    expect_on_cube(sfa_smooth(s, INT32_MIN), SFA_ERR_ARGUMENT, "");
+    sfa_surface *empty = NULL;
+    assert_int_equal(sfa_create(&empty), SFA_OK);
+    assert_error(empty, sfa_smooth(empty, 1), SFA_ERR_STATE, "");
+    sfa_destroy(empty);
+    expect_on_cube(sfa_smooth(s, 0), SFA_ERR_INTERNAL, "not implemented yet");
+    expect_on_cube(sfa_smooth(s, 5), SFA_ERR_INTERNAL, "not implemented yet");
+}
+
+static void adapt(void **state)
+{
+    (void)state;
+    assert_int_equal(sfa_adapt(NULL), SFA_ERR_ARGUMENT);
+    sfa_surface *empty = NULL;
+    assert_int_equal(sfa_create(&empty), SFA_OK);
+    assert_error(empty, sfa_adapt(empty), SFA_ERR_STATE, "");
+    sfa_destroy(empty);
+    expect_on_cube(sfa_adapt(s), SFA_ERR_INTERNAL, "not implemented yet");
+}
+
+static void feature_ranks(void **state)
+{
+    (void)state;
+    int32_t ranks[9];
+    memset(ranks, SENTINEL_BYTE, sizeof ranks);
+    assert_int_equal(sfa_get_feature_ranks(NULL, 8, ranks), SFA_ERR_ARGUMENT);
+    expect_on_cube(sfa_get_feature_ranks(s, 8, NULL), SFA_ERR_ARGUMENT, "");
+    expect_on_cube(sfa_get_feature_ranks(s, 7, ranks), SFA_ERR_ARGUMENT, "");
+    expect_on_cube(sfa_get_feature_ranks(s, -1, ranks), SFA_ERR_ARGUMENT, "");
+    for (size_t b = 0; b < sizeof ranks; ++b)
+        assert_int_equal(((unsigned char *)ranks)[b], SENTINEL_BYTE);
+    sfa_surface *empty = NULL;
+    assert_int_equal(sfa_create(&empty), SFA_OK);
+    assert_error(empty, sfa_get_feature_ranks(empty, 8, ranks), SFA_ERR_STATE, "");
+    sfa_destroy(empty);
+    expect_on_cube(sfa_get_feature_ranks(s, 8, ranks), SFA_ERR_INTERNAL, "not implemented yet");
+    expect_on_cube(sfa_get_feature_ranks(s, 9, ranks), SFA_ERR_INTERNAL, "not implemented yet");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(smooth),
+        cmocka_unit_test(adapt),
+        cmocka_unit_test(feature_ranks),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,72 @@
+#!/bin/sh
+# Installs into a staging tree under build/ with `make install DESTDIR=... PREFIX=...`,
+# checks what was installed, then builds and runs a C host found only through
+# pkg-config, linked against the shared library and, fully static, against the static
+# one (which proves Libs.private). Needs the tree built (`make`).
+# Ends with exactly "install: 1 passed, 0 failed" or "install: 0 passed, 1 failed".
+set -u
+cd "$(dirname "$0")/../.." || exit 1
+
+work=build/install-test
+destdir=$PWD/$work/stage
+prefix=/opt/surfadapt
+root=$destdir$prefix
+cc=${CC:-cc}
+
+fail() {
+  echo "FAIL - $*"
+  echo "install: 0 passed, 1 failed"
+  exit 1
+}
+
+rm -rf "$work"
+mkdir -p "$work"
+# MAKEFLAGS of an enclosing make would be inherited; the install needs none of them.
+if ! env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL "${MAKE:-make}" --no-print-directory install \
+    DESTDIR="$destdir" PREFIX="$prefix" >"$work/install.log" 2>&1; then
+  cat "$work/install.log"
+  fail "make install DESTDIR=$destdir PREFIX=$prefix"
+fi
+echo "ok - make install DESTDIR=... PREFIX=$prefix"
+
+for f in include/surfadapt.h include/surfadapt.mod lib/libsurfadapt.a lib/libsurfadapt_fortran.a \
+         lib/pkgconfig/surfadapt.pc lib/cmake/surfadapt/surfadaptConfig.cmake \
+         lib/cmake/surfadapt/surfadaptConfigVersion.cmake; do
+  [ -f "$root/$f" ] || fail "$prefix/$f not installed"
+done
+[ -x "$root/bin/surfadapt" ] || fail "$prefix/bin/surfadapt not installed"
+# The SONAME link and the development link must both lead to the real file.
+for l in libsurfadapt.so.1 libsurfadapt.so; do
+  if ! { [ -L "$root/lib/$l" ] && [ -f "$root/lib/$l" ]; }; then
+    fail "$prefix/lib/$l is not a working symlink"
+  fi
+done
+echo "ok - header, libraries, symlinks, module, tool, pkg-config and CMake files in place"
+
+# The staging root is not where the package will live: it must not leak into any file.
+if grep -rl "$destdir" "$root/lib/pkgconfig" "$root/lib/cmake"; then
+  fail "DESTDIR written into the files above"
+fi
+echo "ok - no DESTDIR in the generated files"
+
+# Only the staged package is visible; the sysroot maps its -I and -L into the stage.
+PKG_CONFIG_LIBDIR=$root/lib/pkgconfig
+PKG_CONFIG_PATH=
+PKG_CONFIG_SYSROOT_DIR=$destdir
+export PKG_CONFIG_LIBDIR PKG_CONFIG_PATH PKG_CONFIG_SYSROOT_DIR
+flags=$(pkg-config --cflags --libs surfadapt) || fail "pkg-config --cflags --libs surfadapt"
+echo "ok - pkg-config --cflags --libs surfadapt: $flags"
+
+# shellcheck disable=SC2086 # flags are a list of words
+$cc tests/install/host.c -o "$work/host" $flags -lm || fail "compile and link the host against the shared library"
+LD_LIBRARY_PATH=$root/lib "$work/host" || fail "run the host linked against the shared library"
+echo "ok - host linked against the shared library runs"
+
+static_flags=$(pkg-config --static --cflags --libs surfadapt) || fail "pkg-config --static"
+# shellcheck disable=SC2086
+$cc -static tests/install/host.c -o "$work/host-static" $static_flags ||
+  fail "link the host statically with pkg-config --static --libs ($static_flags)"
+"$work/host-static" || fail "run the statically linked host"
+echo "ok - host linked statically with $static_flags runs"
+
+echo "install: 1 passed, 0 failed"

@@ -1,0 +1,200 @@
+/*
+ * A plugin host: loads the library with dlopen, resolves only sfa_get_api and does
+ * everything else through the function table. This is how hosts that must not link
+ * surfadapt at build time use it, so the test is built without -lsurfadapt: the
+ * header is included for its types and macros only.
+ *
+ * Usage: test_plugin /absolute/path/to/libsurfadapt.so.1
+ * Prints one line per check and finally "plugin: N passed, M failed".
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <dlfcn.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "surfadapt.h"
+
+static int passed = 0;
+static int failed = 0;
+
+static int check(int ok, const char *what)
+{
+    printf("%s - %s\n", ok ? "ok" : "FAIL", what);
+    if (ok)
+        passed++;
+    else
+        failed++;
+    return ok;
+}
+
+static int finish(void)
+{
+    printf("plugin: %d passed, %d failed\n", passed, failed);
+    return failed == 0 ? 0 : 1;
+}
+
+typedef const sfa_api *(*get_api_fn)(uint32_t);
+
+/* Unit cube [0,1]^3; every triangle counter-clockwise seen from outside. */
+static const double cube_xyz[8 * 3] = {
+    0, 0, 0,  1, 0, 0,  1, 1, 0,  0, 1, 0,
+    0, 0, 1,  1, 0, 1,  1, 1, 1,  0, 1, 1,
+};
+static const int32_t cube_tris[12 * 3] = {
+    0, 2, 1,  0, 3, 2, /* z = 0, normal -z */
+    4, 5, 6,  4, 6, 7, /* z = 1, normal +z */
+    0, 1, 5,  0, 5, 4, /* y = 0, normal -y */
+    3, 7, 6,  3, 6, 2, /* y = 1, normal +y */
+    0, 4, 7,  0, 7, 3, /* x = 0, normal -x */
+    1, 2, 6,  1, 6, 5, /* x = 1, normal +x */
+};
+
+static int same_mesh(const sfa_api *api, const sfa_surface *s, const double *want_xyz)
+{
+    double xyz[8 * 3];
+    int32_t tris[12 * 3];
+    int32_t nv = -1, nt = -1;
+    if (api->get_counts(s, &nv, &nt) != SFA_OK || nv != 8 || nt != 12)
+        return 0;
+    if (api->get_mesh(s, 8, xyz, 12, tris, 0) != SFA_OK)
+        return 0;
+    return memcmp(xyz, want_xyz, sizeof xyz) == 0 && memcmp(tris, cube_tris, sizeof tris) == 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc != 2) {
+        fprintf(stderr, "usage: %s /path/to/libsurfadapt.so.1\n", argv[0]);
+        return 2;
+    }
+
+    void *lib = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
+    if (!check(lib != NULL, "dlopen the library")) {
+        printf("  %s\n", dlerror());
+        return finish();
+    }
+
+    /* ISO C has no conversion from void * to a function pointer; POSIX guarantees the
+       representation is the same, so copy the bytes. */
+    void *sym = dlsym(lib, "sfa_get_api");
+    get_api_fn get_api = NULL;
+    if (sym)
+        memcpy(&get_api, &sym, sizeof get_api);
+    if (!check(get_api != NULL, "dlsym sfa_get_api")) {
+        dlclose(lib);
+        return finish();
+    }
+
+    const sfa_api *api = get_api(SFA_ABI_VERSION);
+    if (!check(api != NULL, "get_api(1) is not NULL")) {
+        dlclose(lib);
+        return finish();
+    }
+    check(get_api(0) == NULL, "get_api(0) is NULL");
+    check(get_api(SFA_ABI_VERSION + 1) == NULL, "get_api(2) is NULL");
+    check(api->struct_size >= sizeof(sfa_api), "struct_size >= sizeof(sfa_api) of this header");
+    check(api->abi == SFA_ABI_VERSION, "abi == 1");
+
+    /* Members are listed by name, not walked as an array: function pointers and
+       object pointers need not share a representation. */
+    int all_set = 1;
+#define MEMBER_SET(m)                                                   \
+    if (api->m == NULL) {                                               \
+        printf("  member %s is NULL\n", #m);                            \
+        all_set = 0;                                                    \
+    }
+    MEMBER_SET(version_string)
+    MEMBER_SET(abi_version)
+    MEMBER_SET(status_string)
+    MEMBER_SET(create)
+    MEMBER_SET(destroy)
+    MEMBER_SET(last_error)
+    MEMBER_SET(set_mesh)
+    MEMBER_SET(get_counts)
+    MEMBER_SET(get_mesh)
+    MEMBER_SET(set_param)
+    MEMBER_SET(get_param)
+    MEMBER_SET(set_velocities)
+    MEMBER_SET(move)
+    MEMBER_SET(advect)
+    MEMBER_SET(smooth)
+    MEMBER_SET(adapt)
+    MEMBER_SET(get_feature_ranks)
+    MEMBER_SET(measure)
+    MEMBER_SET(add_field)
+    MEMBER_SET(get_field)
+#undef MEMBER_SET
+    if (!check(all_set, "every member of the table is set")) {
+        /* Calling through a NULL member would crash instead of reporting. */
+        dlclose(lib);
+        return finish();
+    }
+
+    char want_version[64];
+    snprintf(want_version, sizeof want_version, "%d.%d.%d", SFA_VERSION_MAJOR, SFA_VERSION_MINOR,
+             SFA_VERSION_PATCH);
+    const char *version = api->version_string();
+    if (!check(version != NULL && strcmp(version, want_version) == 0,
+               "version_string() matches the header's version macros"))
+        printf("  library \"%s\", header \"%s\"\n", version ? version : "(null)", want_version);
+    check(api->abi_version() == SFA_ABI_VERSION, "abi_version() == 1");
+    check(api->status_string(SFA_ERR_MESH) != NULL, "status_string() is not NULL");
+
+    sfa_surface *s = NULL;
+    if (!check(api->create(&s) == SFA_OK && s != NULL, "create")) {
+        dlclose(lib);
+        return finish();
+    }
+
+    check(api->set_mesh(s, 8, cube_xyz, 12, cube_tris, 0) == SFA_OK, "set_mesh unit cube");
+
+    double volume = 0.0;
+    /* Exact: with 0/1 coordinates every term a.(b x c) is a small integer. */
+    int rc = api->measure(s, SFA_MEASURE_VOLUME, &volume);
+    if (!check(rc == SFA_OK && volume == 1.0, "measure volume == 1 exactly"))
+        printf("  status %d, volume %.17g\n", rc, volume);
+
+    check(same_mesh(api, s, cube_xyz), "get_mesh returns the cube as set");
+
+    const double v[3] = {0.25, -0.5, 0.125};
+    double vel[8 * 3];
+    for (int i = 0; i < 8; i++)
+        memcpy(&vel[3 * i], v, sizeof v);
+    check(api->set_velocities(s, vel) == SFA_OK, "set_velocities of a rigid translation");
+
+    /* A translation never turns a normal over, so the whole step is taken. */
+    const double dt = 0.5;
+    double dt_taken = 0.0;
+    rc = api->move(s, dt, &dt_taken);
+    if (!check(rc == SFA_OK && dt_taken == dt, "move takes the whole step (dt_taken == dt)"))
+        printf("  status %d, dt_taken %.17g\n", rc, dt_taken);
+
+    double moved[8 * 3];
+    for (int i = 0; i < 8 * 3; i++)
+        moved[i] = cube_xyz[i] + dt * v[i % 3];
+    /* dt and v are powers of two, so x + dt*v is exact. */
+    check(same_mesh(api, s, moved), "vertices translated by dt*v");
+
+    /* Vertex 8 does not exist: the mesh must be refused and the cube kept. */
+    static const int32_t bad_tris[12 * 3] = {
+        0, 2, 1,  0, 3, 2,  4, 5, 6,  4, 6, 7,  0, 1, 5,  0, 5, 4,
+        3, 7, 6,  3, 6, 2,  0, 4, 7,  0, 7, 3,  1, 2, 6,  1, 6, 8,
+    };
+    rc = api->set_mesh(s, 8, cube_xyz, 12, bad_tris, 0);
+    if (!check(rc == SFA_ERR_MESH, "set_mesh with an index out of range gives SFA_ERR_MESH"))
+        printf("  status %d\n", rc);
+    const char *message = api->last_error(s);
+    if (check(message != NULL && message[0] != '\0', "last_error explains the refusal"))
+        printf("  \"%s\"\n", message);
+    check(same_mesh(api, s, moved), "the cube survives the refused mesh");
+    rc = api->measure(s, SFA_MEASURE_VOLUME, &volume);
+    if (!check(rc == SFA_OK && fabs(volume - 1.0) < 1e-12, "volume is still 1"))
+        printf("  status %d, volume %.17g\n", rc, volume);
+
+    api->destroy(s);
+    check(1, "destroy");
+
+    check(dlclose(lib) == 0, "dlclose");
+    return finish();
+}
