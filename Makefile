@@ -59,6 +59,8 @@ TEST_RPATH := -Wl,-rpath,'$$ORIGIN/../../lib'
 
 .PHONY: all deps deps-check deps-doc check demo bench doc install clean abi-check abi-baseline
 .DEFAULT_GOAL := all
+# Keep object files of pattern-built programs, so that rebuilds are incremental.
+.SECONDARY:
 
 all: deps $(LIB_REAL) $(LIB_SO) $(LIB_DEV) $(LIB_A) $(FLIB_A) $(FMOD) $(CLI)
 

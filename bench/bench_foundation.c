@@ -85,6 +85,19 @@ int main(void)
             samples[r] = now() - t0;
         }
         report("move", nverts, ntris, median(samples), "vertex", nverts);
+        const double move_s = median(samples);
+
+        /* Baseline in the same run: the bare update x += dt v a host would write itself,
+         * without fold control; the ratio is what the fold control costs. */
+        for (int r = 0; r < runs; ++r) {
+            const double t0 = now();
+            for (int32_t i = 0; i < 3 * nverts; ++i)
+                xyz[i] += 1e-3 * vel[i];
+            samples[r] = now() - t0;
+        }
+        const double bare_s = median(samples);
+        printf("{\"bench\":\"move_vs_bare_update\",\"vertices\":%d,\"bare_median_s\":%.6f,\"ratio\":%.2f}\n",
+               nverts, bare_s, move_s / bare_s);
 
         for (int r = 0; r < runs; ++r) {
             double taken;
