@@ -115,7 +115,11 @@ enum sfa_param {
         rejects the mesh with ::SFA_ERR_MESH naming the first one; 1 drops them and
         keeps the other vertices in their order (so vertex i of the result is the
         i-th referenced vertex of the input). */
-    SFA_PARAM_DROP_UNREFERENCED = 14
+    SFA_PARAM_DROP_UNREFERENCED = 14,
+    /** Feature detection safeguard: a vertex where a ridge curve turns by more than this
+        angle (degrees, in (0, 180); default 40) is a corner, so that ridge vertices lie on
+        curves that are locally straight or gently bent. */
+    SFA_PARAM_RIDGE_TURN_ANGLE = 15
 };
 
 /** Quantities for sfa_measure(). */
@@ -347,15 +351,53 @@ int sfa_adapt(sfa_surface *s);
 /* -------------------------------------------------------------- analysis */
 
 /**
- * Feature rank of every current vertex: 0 smooth, 1 ridge, 2 corner (boundary
- * vertices count as ridge or corner).
+ * Feature rank of every current vertex: 0 smooth, 1 ridge, 2 corner (paper §2.2, §3.1).
+ * A vertex is a feature candidate when its quadric's lambda2/lambda1 reaches the ridge
+ * threshold (or lambda3/lambda1 the corner threshold); ridge edges join two candidates across
+ * a dihedral angle of at least ::SFA_PARAM_RIDGE_ANGLE, and boundary edges are ridge edges.
+ * Then ranks follow the ridge curves: a vertex on exactly two ridge edges is a ridge vertex,
+ * unless the curve turns there by more than ::SFA_PARAM_RIDGE_TURN_ANGLE; a vertex where
+ * curves end or meet (one, three or more ridge edges) is a corner; so is an isolated corner
+ * candidate (a cone's tip). Everything else is smooth. The answer does not depend on vertex
+ * or triangle order, position, orientation or scale.
  * @param s        the surface.
  * @param capacity number of `int32_t` that `ranks` has room for, >= nverts.
  * @param ranks    receives nverts ranks (owned by the caller).
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, capacity too small: nothing written),
- *         ::SFA_ERR_STATE (no mesh), ::SFA_ERR_INTERNAL (in this release: "not implemented yet").
+ *         ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY.
  */
 int sfa_get_feature_ranks(const sfa_surface *s, int32_t capacity, int32_t *ranks);
+
+/**
+ * Per-vertex results of the quadric analysis (paper §2.2, §3.1) for hosts and viewers.
+ * Any output may be NULL when not wanted.
+ * @param s               the surface.
+ * @param capacity        number of vertices the outputs have room for, >= nverts.
+ * @param normals         receives `3*nverts` unit normals: the quadric's first eigenvector e1,
+ *                        oriented outward (along the vertex's area-weighted face normal).
+ * @param long_directions receives `3*nverts` unit tangent vectors along which the anisotropic
+ *                        metric wants triangles long (its smaller eigenvalue, e3 of the quadric).
+ * @param aspect_ratios   receives `nverts` metric aspect ratios sqrt(m_max / m_min) >= 1, at most
+ *                        sqrt(psi_u / psi_l) (eq. 12); 1 everywhere in isotropic mode.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL handle, capacity too small: nothing written),
+ *         ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY.
+ */
+int sfa_get_vertex_frames(const sfa_surface *s, int32_t capacity, double *normals, double *long_directions,
+                          double *aspect_ratios);
+
+/**
+ * The ridge edges found by feature detection (boundary edges included), each as its two
+ * vertex indices, smaller first, sorted; the same edges that sfa_get_feature_ranks() counts.
+ * @param s          the surface.
+ * @param capacity   number of edges `edges` has room for (it holds `2*capacity` indices).
+ * @param edges      receives `2*count` vertex indices; may be NULL to ask for the count only.
+ * @param count      receives the number of ridge edges (always, when not NULL).
+ * @param index_base 0 or 1, the base of the indices written.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL handle, `edges` given with capacity too small:
+ *         edges not written; bad index_base), ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY.
+ */
+int sfa_get_ridge_edges(const sfa_surface *s, int32_t capacity, int32_t *edges, int32_t *count,
+                        int32_t index_base);
 
 /**
  * Measures the current surface.
@@ -424,6 +466,10 @@ typedef struct sfa_api {
     int (*measure)(const sfa_surface *s, int quantity, double *value); /**< sfa_measure() */
     int (*add_field)(sfa_surface *s, int32_t ncomp, const double *values, int32_t *field_id); /**< sfa_add_field() */
     int (*get_field)(const sfa_surface *s, int32_t field_id, int32_t capacity, double *values); /**< sfa_get_field() */
+    int (*get_vertex_frames)(const sfa_surface *s, int32_t capacity, double *normals, double *long_directions,
+                             double *aspect_ratios);          /**< sfa_get_vertex_frames() */
+    int (*get_ridge_edges)(const sfa_surface *s, int32_t capacity, int32_t *edges, int32_t *count,
+                           int32_t index_base);             /**< sfa_get_ridge_edges() */
 } sfa_api;
 
 /**

@@ -52,6 +52,7 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_PARAM_LARGE_ANGLE = 12
   integer(c_int), parameter, public :: SFA_PARAM_FOLD_SAFETY = 13
   integer(c_int), parameter, public :: SFA_PARAM_DROP_UNREFERENCED = 14
+  integer(c_int), parameter, public :: SFA_PARAM_RIDGE_TURN_ANGLE = 15
 
   ! --------------------------------------------------- enum sfa_measure_quantity
   integer(c_int), parameter, public :: SFA_MEASURE_VOLUME = 0
@@ -71,6 +72,7 @@ module surfadapt
   public :: sfa_smooth, sfa_adapt
   public :: sfa_get_feature_ranks, sfa_measure
   public :: sfa_add_field, sfa_get_field
+  public :: sfa_get_vertex_frames, sfa_get_ridge_edges
   public :: sfa_get_api
 
   public :: sfa_version, sfa_status_message, sfa_error_message
@@ -241,6 +243,30 @@ module surfadapt
       real(c_double), intent(out) :: values(*)
       integer(c_int) :: sfa_get_field
     end function sfa_get_field
+
+    !> Per-vertex normals (3,n), long directions (3,n) and metric aspect ratios (n).
+    !> The C function accepts NULL for outputs not wanted; this interface asks for all three.
+    function sfa_get_vertex_frames(s, capacity, normals, long_directions, aspect_ratios) &
+        bind(C, name='sfa_get_vertex_frames')
+      import :: c_int, c_int32_t, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: capacity
+      real(c_double), intent(out) :: normals(*), long_directions(*), aspect_ratios(*)
+      integer(c_int) :: sfa_get_vertex_frames
+    end function sfa_get_vertex_frames
+
+    !> Ridge edges as vertex pairs edges(2,count) in index_base. count is always written;
+    !> with capacity 0 the call returns SFA_ERR_ARGUMENT (if there are ridge edges) and
+    !> only count, which is how to size the array.
+    function sfa_get_ridge_edges(s, capacity, edges, count, index_base) bind(C, name='sfa_get_ridge_edges')
+      import :: c_int, c_int32_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: capacity
+      integer(c_int32_t), intent(out) :: edges(*)
+      integer(c_int32_t), intent(out) :: count
+      integer(c_int32_t), value :: index_base
+      integer(c_int) :: sfa_get_ridge_edges
+    end function sfa_get_ridge_edges
 
     !> Pointer to the const sfa_api table, or c_null_ptr. The C argument is uint32_t;
     !> Fortran has no unsigned kind, and int32_t is passed the same way for the values

@@ -38,6 +38,7 @@ const Spec specs[] = {
     {"SFA_PARAM_LARGE_ANGLE", 160, Kind::right_open, 60, 180},
     {"SFA_PARAM_FOLD_SAFETY", 0.5, Kind::left_open, 0, 1},
     {"SFA_PARAM_DROP_UNREFERENCED", 0, Kind::flag, 0, 1},
+    {"SFA_PARAM_RIDGE_TURN_ANGLE", 40, Kind::open_interval, 0, 180},
 };
 static_assert(sizeof specs / sizeof specs[0] == static_cast<size_t>(Param::count), "one spec per key");
 

@@ -22,6 +22,7 @@ enum class Param : int {
     large_angle,
     fold_safety,
     drop_unreferenced,
+    ridge_turn_angle,
     count
 };
 

@@ -1,9 +1,46 @@
-// Analysis: sfa_measure, sfa_get_feature_ranks.
+// Analysis: sfa_measure, sfa_get_feature_ranks, sfa_get_vertex_frames, sfa_get_ridge_edges.
 #include "api/boundary.hpp"
 
+#include "geometry/analysis.hpp"
 #include "geometry/measures.hpp"
 
 using namespace sfa;
+
+namespace {
+
+constexpr double radians = 3.14159265358979323846 / 180;
+
+// The analysis of the current mesh with the surface's parameters. Computed on demand:
+// it costs well under a microsecond per vertex, and a cache would have to follow every
+// change of mesh or parameter.
+SurfaceAnalysis current_analysis(const sfa_surface *s)
+{
+    const Parameters &p = s->params;
+    const MetricBounds bounds{p.get(Param::metric_min_angle) * radians, p.get(Param::metric_max_angle) * radians,
+                              p.get(Param::anisotropic) != 0};
+    if (bounds.anisotropic && !(bounds.lower_angle < bounds.upper_angle)) {
+        char message[200];
+        std::snprintf(message, sizeof message,
+                      "SFA_PARAM_METRIC_MIN_ANGLE (%g) must be smaller than SFA_PARAM_METRIC_MAX_ANGLE (%g)",
+                      p.get(Param::metric_min_angle), p.get(Param::metric_max_angle));
+        fail(Status::argument, message);
+    }
+    const FeatureThresholds thresholds{p.get(Param::ridge_angle) * radians, p.get(Param::corner_angle) * radians,
+                                       p.get(Param::ridge_turn_angle) * radians};
+    return analyze_surface(s->mesh, thresholds, bounds);
+}
+
+void require_capacity(const sfa_surface *s, int32_t capacity)
+{
+    if (capacity < s->mesh.num_vertices()) {
+        char message[120];
+        std::snprintf(message, sizeof message, "capacity too small: the mesh has %d vertices, room was given for %d",
+                      s->mesh.num_vertices(), capacity);
+        fail(Status::argument, message);
+    }
+}
+
+} // namespace
 
 extern "C" {
 
@@ -38,8 +75,57 @@ SFA_EXPORT int sfa_get_feature_ranks(const sfa_surface *s, int32_t capacity, int
     return call(s, "sfa_get_feature_ranks", [&] {
         require(ranks != nullptr, "ranks is NULL");
         require_mesh(s);
-        require(capacity >= s->mesh.num_vertices(), "capacity is smaller than the number of vertices");
-        fail(Status::internal, "not implemented yet: feature detection (paper §2.2, §3.1) comes in a later release");
+        require_capacity(s, capacity);
+        const SurfaceAnalysis analysis = current_analysis(s);
+        for (size_t v = 0; v < analysis.features.rank.size(); ++v)
+            ranks[v] = analysis.features.rank[v];
+    });
+}
+
+SFA_EXPORT int sfa_get_vertex_frames(const sfa_surface *s, int32_t capacity, double *normals, double *long_directions,
+                                     double *aspect_ratios)
+{
+    return call(s, "sfa_get_vertex_frames", [&] {
+        require_mesh(s);
+        require_capacity(s, capacity);
+        const SurfaceAnalysis analysis = current_analysis(s);
+        for (size_t v = 0; v < analysis.metric.size(); ++v) {
+            const VertexMetric &m = analysis.metric[v];
+            for (int k = 0; k < 3; ++k) {
+                if (normals)
+                    normals[3 * v + k] = m.normal[k];
+                if (long_directions)
+                    long_directions[3 * v + k] = m.minor[k];
+            }
+            if (aspect_ratios)
+                aspect_ratios[v] = m.aspect_ratio();
+        }
+    });
+}
+
+SFA_EXPORT int sfa_get_ridge_edges(const sfa_surface *s, int32_t capacity, int32_t *edges, int32_t *count,
+                                   int32_t index_base)
+{
+    return call(s, "sfa_get_ridge_edges", [&] {
+        require(index_base == 0 || index_base == 1, "index_base must be 0 or 1");
+        require_mesh(s);
+        const SurfaceAnalysis analysis = current_analysis(s);
+        const auto &ridges = analysis.features.ridge_edges;
+        const int32_t found = static_cast<int32_t>(ridges.size());
+        if (count)
+            *count = found;
+        if (!edges)
+            return;
+        if (capacity < found) {
+            char message[120];
+            std::snprintf(message, sizeof message, "capacity too small: there are %d ridge edges, room was given for %d",
+                          found, capacity);
+            fail(Status::argument, message);
+        }
+        for (int32_t e = 0; e < found; ++e) {
+            edges[2 * e] = ridges[e][0] + index_base;
+            edges[2 * e + 1] = ridges[e][1] + index_base;
+        }
     });
 }
 

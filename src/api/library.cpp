@@ -77,6 +77,8 @@ SFA_EXPORT const sfa_api *sfa_get_api(uint32_t abi_version)
         sfa_measure,
         sfa_add_field,
         sfa_get_field,
+        sfa_get_vertex_frames,
+        sfa_get_ridge_edges,
     };
     return abi_version == 1 ? &table_v1 : nullptr;
 }

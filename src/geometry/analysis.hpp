@@ -1,0 +1,18 @@
+// Everything the adaptation needs to know about the surface at once: quadrics, feature
+// ranks and ridge edges, and the anisotropic metric at every vertex.
+#pragma once
+
+#include "geometry/features.hpp"
+#include "geometry/metric.hpp"
+
+namespace sfa {
+
+struct SurfaceAnalysis {
+    std::vector<QuadricEigen> eigen;
+    Features features;
+    std::vector<VertexMetric> metric;
+};
+
+SurfaceAnalysis analyze_surface(const TriMesh &mesh, const FeatureThresholds &thresholds, const MetricBounds &bounds);
+
+} // namespace sfa

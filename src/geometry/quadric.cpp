@@ -1,0 +1,56 @@
+#include "geometry/quadric.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+
+namespace sfa {
+
+std::vector<Vec3> face_area_vectors(const TriMesh &mesh)
+{
+    std::vector<Vec3> area(mesh.tri.size());
+    for (size_t t = 0; t < mesh.tri.size(); ++t) {
+        const Triangle &c = mesh.tri[t];
+        area[t] = 0.5 * (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]);
+    }
+    return area;
+}
+
+std::vector<Mat3> vertex_quadrics(const TriMesh &mesh, const std::vector<Vec3> &area_vectors)
+{
+    std::vector<Mat3> quadric(mesh.pos.size(), Mat3::Zero());
+    for (size_t t = 0; t < mesh.tri.size(); ++t) {
+        const Vec3 &a = area_vectors[t];
+        const double area = a.norm();
+        if (area == 0)
+            continue; // a flat triangle has no normal and no weight
+        const Mat3 contribution = a * a.transpose() / area;
+        for (int32_t v : mesh.tri[t])
+            quadric[v] += contribution;
+    }
+    return quadric;
+}
+
+QuadricEigen decompose(const Mat3 &quadric)
+{
+    // Eigen's closed-form 3x3 solver is several times faster than the iterative one, but
+    // its eigenvectors lose accuracy when eigenvalues nearly coincide. Keep its answer when
+    // every eigenpair's residual is at round-off level relative to lambda1; otherwise
+    // (nearly repeated eigenvalues with a poorly resolved basis) use the iterative solver.
+    Eigen::SelfAdjointEigenSolver<Mat3> solver;
+    solver.computeDirect(quadric);
+    const double scale = std::max(quadric.norm(), 1e-300);
+    const Mat3 residual = quadric * solver.eigenvectors() - solver.eigenvectors() * solver.eigenvalues().asDiagonal();
+    const double orthogonality = (solver.eigenvectors().transpose() * solver.eigenvectors() - Mat3::Identity()).norm();
+    if (!(residual.norm() <= 1e-12 * scale && orthogonality <= 1e-12))
+        solver.compute(quadric);
+    // Eigen sorts increasingly; the paper numbers them decreasingly.
+    QuadricEigen out;
+    for (int i = 0; i < 3; ++i) {
+        out.values[i] = std::max(solver.eigenvalues()[2 - i], 0.0); // A is positive semi-definite
+        out.vectors.col(i) = solver.eigenvectors().col(2 - i);
+    }
+    return out;
+}
+
+} // namespace sfa
