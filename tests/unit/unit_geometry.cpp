@@ -1,0 +1,122 @@
+// Unit tests of the quadric analysis and the metric: the eigen-solver choice on
+// near-degenerate tensors, the frame rotation of §3.2, metric lengths (eq. 4) and the
+// clamping of eq. 12.
+#include "geometry/metric.hpp"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstddef>
+#include <setjmp.h>
+
+extern "C" {
+#include <cmocka.h>
+}
+
+using namespace sfa;
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+// A rotation that mixes every axis, so that no answer is axis-aligned by accident.
+Mat3 some_rotation()
+{
+    return (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()) * Eigen::AngleAxisd(-1.1, Vec3(-2, 1, 0.5).normalized()))
+        .toRotationMatrix();
+}
+
+void decomposition_recovers_near_degenerate_spectra(void **)
+{
+    const Mat3 rotation = some_rotation();
+    // Flat (lambda2 = lambda3 ~ 0), cylinder-like (lambda3 << lambda2 << lambda1), and a
+    // nearly repeated pair (lambda2 ~ lambda3), where the closed form loses accuracy.
+    const Eigen::Vector3d spectra[] = {{1, 1e-17, 0}, {1, 1e-2, 1e-15}, {1, 1e-3, 1e-3 * (1 - 1e-9)}, {2, 1, 1e-6}};
+    for (const Eigen::Vector3d &lambda : spectra) {
+        const Mat3 a = rotation * lambda.asDiagonal() * rotation.transpose();
+        const QuadricEigen eigen = decompose(a);
+        for (int i = 0; i < 3; ++i)
+            assert_true(std::abs(eigen.values[i] - lambda[i]) <= 1e-14);
+        assert_true(eigen.values[0] >= eigen.values[1] && eigen.values[1] >= eigen.values[2]);
+        // e1 is always well separated here: it must match the rotated x axis.
+        assert_true(std::abs(std::abs(eigen.e(0).dot(rotation.col(0))) - 1) < 1e-12);
+        // Every returned pair is an eigenpair of A to round-off.
+        assert_true((a * eigen.vectors - eigen.vectors * eigen.values.asDiagonal()).norm() < 1e-13);
+    }
+}
+
+QuadricEigen eigen_of(const Eigen::Vector3d &values, const Mat3 &vectors) { return QuadricEigen{values, vectors}; }
+
+void metric_is_identity_where_flat_and_clamped_to_the_bounds(void **)
+{
+    const MetricBounds bounds{8 * pi / 180, 30 * pi / 180, true};
+    const double ratio = std::pow(std::tan(15 * pi / 180) / std::tan(4 * pi / 180), 2);
+    const VertexMetric flat = vertex_metric(eigen_of({2, 0, 0}, Mat3::Identity()), Vec3(1, 0, 0), bounds);
+    assert_float_equal(flat.m_major, 1, 1e-15);
+    assert_float_equal(flat.m_minor, 1, 1e-15);
+    const VertexMetric ridge = vertex_metric(eigen_of({1, 1, 0}, Mat3::Identity()), Vec3(1, 0, 0), bounds);
+    assert_float_equal(ridge.m_major, ratio, 1e-12);
+    assert_float_equal(ridge.aspect_ratio(), std::tan(15 * pi / 180) / std::tan(4 * pi / 180), 1e-12);
+    const VertexMetric isotropic =
+        vertex_metric(eigen_of({1, 1, 0}, Mat3::Identity()), Vec3(1, 0, 0), MetricBounds{0.1, 0.5, false});
+    assert_float_equal(isotropic.aspect_ratio(), 1, 0);
+}
+
+void normal_points_outward_and_frame_is_right_handed(void **)
+{
+    const VertexMetric m = vertex_metric(eigen_of({1, 0.1, 0}, Mat3::Identity()), Vec3(-3, 0.2, 0),
+                                         MetricBounds{8 * pi / 180, 30 * pi / 180, true});
+    assert_float_equal(m.normal.x(), -1, 0);
+    assert_float_equal(m.major.cross(m.minor).dot(m.normal), 1, 1e-15);
+}
+
+void frame_rotation_is_exact_for_a_shared_normal(void **)
+{
+    // Two frames in the same plane, rotated by 0.4 rad about the common normal z.
+    Eigen::Matrix<double, 3, 2> tp, tq;
+    tp << 1, 0, 0, 1, 0, 0;
+    tq << std::cos(0.4), -std::sin(0.4), std::sin(0.4), std::cos(0.4), 0, 0;
+    const Eigen::Matrix2d r = frame_rotation(tq, tp);
+    assert_true((r - tq.transpose() * tp).norm() < 1e-15);
+    assert_true((r.transpose() * r - Eigen::Matrix2d::Identity()).norm() < 1e-15);
+}
+
+void frame_rotation_stays_a_rotation_when_normals_differ(void **)
+{
+    Eigen::Matrix<double, 3, 2> tp, tq;
+    tp << 1, 0, 0, 1, 0, 0;
+    const Mat3 tilt = Eigen::AngleAxisd(0.3, Vec3(1, 1, 0).normalized()).toRotationMatrix();
+    tq = tilt * tp;
+    const Eigen::Matrix2d r = frame_rotation(tq, tp);
+    assert_true((r.transpose() * r - Eigen::Matrix2d::Identity()).norm() < 1e-14);
+    // R_2 is along the projection of p's second axis onto q's frame.
+    const Eigen::Vector2d s2 = tq.transpose() * tp.col(1);
+    assert_true((r.col(1) - s2.normalized()).norm() < 1e-14);
+}
+
+void metric_length_scales_with_direction(void **)
+{
+    // A ridge along y at both ends: short across (x, factor sqrt(m_major)), physical along y.
+    const MetricBounds bounds{8 * pi / 180, 30 * pi / 180, true};
+    Mat3 axes;
+    axes.col(0) = Vec3(0, 0, 1); // e1: normal
+    axes.col(1) = Vec3(1, 0, 0); // e2: across the ridge
+    axes.col(2) = Vec3(0, 1, 0); // e3: along it
+    const VertexMetric m = vertex_metric(eigen_of({1, 1, 0}, axes), Vec3(0, 0, 1), bounds);
+    assert_float_equal(metric_edge_length(Vec3(0, 0, 0), m, Vec3(0, 0.5, 0), m), 0.5, 1e-15);
+    assert_float_equal(metric_edge_length(Vec3(0, 0, 0), m, Vec3(0.5, 0, 0), m), 0.5 * std::sqrt(m.m_major), 1e-14);
+}
+
+} // namespace
+
+int main()
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(decomposition_recovers_near_degenerate_spectra),
+        cmocka_unit_test(metric_is_identity_where_flat_and_clamped_to_the_bounds),
+        cmocka_unit_test(normal_points_outward_and_frame_is_right_handed),
+        cmocka_unit_test(frame_rotation_is_exact_for_a_shared_normal),
+        cmocka_unit_test(frame_rotation_stays_a_rotation_when_normals_differ),
+        cmocka_unit_test(metric_length_scales_with_direction),
+    };
+    return cmocka_run_group_tests_name("unit_geometry", tests, nullptr, nullptr);
+}
