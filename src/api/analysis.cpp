@@ -18,7 +18,7 @@ SurfaceAnalysis current_analysis(const sfa_surface *s)
     const Parameters &p = s->params;
     const MetricBounds bounds{p.get(Param::metric_min_angle) * radians, p.get(Param::metric_max_angle) * radians,
                               p.get(Param::anisotropic) != 0};
-    if (bounds.anisotropic && !(bounds.lower_angle < bounds.upper_angle)) {
+    if (bounds.anisotropic && !(bounds.lower_ratio < bounds.upper_ratio)) {
         char message[200];
         std::snprintf(message, sizeof message,
                       "SFA_PARAM_METRIC_MIN_ANGLE (%g) must be smaller than SFA_PARAM_METRIC_MAX_ANGLE (%g)",

@@ -13,6 +13,12 @@ Eigen::Matrix<double, 3, 2> VertexMetric::frame() const
     return t;
 }
 
+MetricBounds::MetricBounds(double lower_angle, double upper_angle, bool anisotropic_metric)
+    : lower_ratio(std::pow(std::tan(lower_angle / 2), 2)), upper_ratio(std::pow(std::tan(upper_angle / 2), 2)),
+      anisotropic(anisotropic_metric)
+{
+}
+
 VertexMetric vertex_metric(const QuadricEigen &eigen, const Vec3 &outward, const MetricBounds &bounds)
 {
     VertexMetric metric;
@@ -25,8 +31,7 @@ VertexMetric vertex_metric(const QuadricEigen &eigen, const Vec3 &outward, const
         return metric;
     }
     const double lambda1 = eigen.values[0];
-    const double psi_l = lambda1 * std::pow(std::tan(bounds.lower_angle / 2), 2);
-    const double psi_u = lambda1 * std::pow(std::tan(bounds.upper_angle / 2), 2);
+    const double psi_l = lambda1 * bounds.lower_ratio, psi_u = lambda1 * bounds.upper_ratio;
     const auto clamped = [&](double lambda) { return std::min(std::max(lambda, psi_l), psi_u) / psi_l; };
     metric.m_major = clamped(eigen.values[1]);
     metric.m_minor = clamped(eigen.values[2]);

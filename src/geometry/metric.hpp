@@ -10,8 +10,10 @@
 namespace sfa {
 
 struct MetricBounds {
-    double lower_angle; // radians: psi_l = lambda1 tan^2(angle/2)
-    double upper_angle; // radians: psi_u = lambda1 tan^2(angle/2)
+    // psi_l = lambda1 tan^2(lower_angle/2), psi_u = lambda1 tan^2(upper_angle/2); angles in radians.
+    MetricBounds(double lower_angle, double upper_angle, bool anisotropic_metric);
+    double lower_ratio; // psi_l / lambda1
+    double upper_ratio; // psi_u / lambda1
     bool anisotropic;   // false: the identity metric (isotropic adaptation, for comparison)
 };
 
