@@ -3,9 +3,11 @@
 //
 //   surfadapt demo            advect a sphere through the Enright flow, print a table
 //   surfadapt info FILE       validate an OBJ/OFF mesh and print its measures
+//   surfadapt features IN OUT write the detected features of a mesh as VTK for ParaView
 #include "flows.hpp"
 #include "icosphere.h"
 #include "obj_io.h"
+#include "vtk_writer.h"
 
 #include "surfadapt.h"
 
@@ -15,6 +17,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -28,6 +31,11 @@ const char *usage = "usage: surfadapt COMMAND [OPTIONS]\n"
                     "        sets the icosphere resolution: 10*4^K+2 vertices. N defaults to 200 (t = 3).\n"
                     "  info FILE [--drop-unreferenced]\n"
                     "        read an OBJ or OFF mesh, validate it and print its measures\n"
+                    "  features IN OUT.vtk [--drop-unreferenced]\n"
+                    "        read an OBJ or OFF mesh, detect its ridges and corners and write a legacy\n"
+                    "        VTK file for ParaView: triangles (POLYGONS) and ridge edges (LINES) with\n"
+                    "        cell data 'ridge', point data 'rank' (0 smooth, 1 ridge, 2 corner),\n"
+                    "        'aspect_ratio', 'long_direction' and 'normal' of the anisotropic metric\n"
                     "  --help\n"
                     "        this text\n";
 
@@ -166,6 +174,84 @@ int info(int argc, char **argv)
     return 0;
 }
 
+int features(int argc, char **argv)
+{
+    if (argc < 4) {
+        std::fprintf(stderr, "surfadapt features: needs an input mesh and an output .vtk file\n%s", usage);
+        return 2;
+    }
+    bool drop = false;
+    for (int i = 4; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--drop-unreferenced"))
+            drop = true;
+        else {
+            std::fprintf(stderr, "surfadapt features: unknown option '%s'\n%s", argv[i], usage);
+            return 2;
+        }
+    }
+    const char *in = argv[2], *out = argv[3];
+    sfa_mesh_data mesh{};
+    char error[512];
+    if (mesh_read(in, &mesh, error, sizeof error) != 0) {
+        std::fprintf(stderr, "surfadapt: %s\n", error);
+        return 1;
+    }
+    sfa_surface *s = nullptr;
+    if (sfa_create(&s) != SFA_OK)
+        return 1;
+    sfa_set_param(s, SFA_PARAM_DROP_UNREFERENCED, drop ? 1 : 0);
+    const int rc = sfa_set_mesh(s, mesh.nverts, mesh.xyz, mesh.ntris, mesh.tris, 0);
+    mesh_free(&mesh);
+    if (rc != SFA_OK)
+        return fail(s, in);
+
+    // Read the mesh back: dropping unreferenced vertices renumbers them, and the ranks and
+    // frames follow the library's numbering.
+    int32_t nverts = 0, ntris = 0, nlines = 0;
+    sfa_get_counts(s, &nverts, &ntris);
+    std::vector<double> xyz(3 * static_cast<size_t>(nverts)), long_direction(xyz.size()), normal(xyz.size());
+    std::vector<double> aspect_ratio(static_cast<size_t>(nverts));
+    std::vector<int32_t> tris(3 * static_cast<size_t>(ntris)), rank(static_cast<size_t>(nverts));
+    if (sfa_get_mesh(s, nverts, xyz.data(), ntris, tris.data(), 0) != SFA_OK)
+        return fail(s, "sfa_get_mesh");
+    if (sfa_get_feature_ranks(s, nverts, rank.data()) != SFA_OK)
+        return fail(s, "sfa_get_feature_ranks");
+    if (sfa_get_vertex_frames(s, nverts, normal.data(), long_direction.data(), aspect_ratio.data()) != SFA_OK)
+        return fail(s, "sfa_get_vertex_frames");
+    if (sfa_get_ridge_edges(s, 0, nullptr, &nlines, 0) != SFA_OK)
+        return fail(s, "sfa_get_ridge_edges");
+    std::vector<int32_t> lines(2 * static_cast<size_t>(nlines) + 1);
+    if (sfa_get_ridge_edges(s, nlines, lines.data(), &nlines, 0) != SFA_OK)
+        return fail(s, "sfa_get_ridge_edges");
+    sfa_destroy(s);
+
+    VtkFeatureMesh vtk;
+    vtk.nverts = nverts;
+    vtk.ntris = ntris;
+    vtk.nlines = nlines;
+    vtk.xyz = xyz.data();
+    vtk.tris = tris.data();
+    vtk.lines = lines.data();
+    vtk.rank = rank.data();
+    vtk.aspect_ratio = aspect_ratio.data();
+    vtk.long_direction = long_direction.data();
+    vtk.normal = normal.data();
+    std::string write_error;
+    const std::string title = std::string("surfadapt features of ") + in;
+    // The title is one line of at most 256 characters in the legacy format.
+    if (!write_vtk_features(out, title.substr(0, 255).c_str(), vtk, write_error)) {
+        std::fprintf(stderr, "surfadapt: %s\n", write_error.c_str());
+        return 1;
+    }
+    int32_t count[3] = {0, 0, 0};
+    for (const int32_t r : rank)
+        if (r >= 0 && r <= 2)
+            ++count[r];
+    std::printf("%s: %d vertices, %d triangles: %d smooth, %d ridge, %d corner vertices, %d ridge edges -> %s\n", in,
+                nverts, ntris, count[0], count[1], count[2], nlines, out);
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -179,6 +265,8 @@ int main(int argc, char **argv)
         return demo(argc, argv);
     if (command == "info")
         return info(argc, argv);
+    if (command == "features")
+        return features(argc, argv);
     std::fprintf(stderr, "surfadapt: unknown command '%s'\n%s", argv[1], usage);
     return 2;
 }

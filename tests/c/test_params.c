@@ -22,6 +22,7 @@ static double expected_default(int key)
     case SFA_PARAM_LARGE_ANGLE: return 160;
     case SFA_PARAM_FOLD_SAFETY: return 0.5;
     case SFA_PARAM_DROP_UNREFERENCED: return 0;
+    case SFA_PARAM_RIDGE_TURN_ANGLE: return 40;
     default: return NAN;
     }
 }
@@ -45,6 +46,7 @@ static double valid_value(int key)
     case SFA_PARAM_LARGE_ANGLE: return 150;
     case SFA_PARAM_FOLD_SAFETY: return 1;
     case SFA_PARAM_DROP_UNREFERENCED: return 1;
+    case SFA_PARAM_RIDGE_TURN_ANGLE: return 60;
     default: return NAN;
     }
 }
@@ -58,7 +60,8 @@ static int invalid_values(int key, double out[4])
     case SFA_PARAM_RIDGE_ANGLE:
     case SFA_PARAM_CORNER_ANGLE:
     case SFA_PARAM_METRIC_MIN_ANGLE:
-    case SFA_PARAM_METRIC_MAX_ANGLE: out[0] = 0; out[1] = 180; out[2] = -10; out[3] = 200; return 4;
+    case SFA_PARAM_METRIC_MAX_ANGLE:
+    case SFA_PARAM_RIDGE_TURN_ANGLE: out[0] = 0; out[1] = 180; out[2] = -10; out[3] = 200; return 4;
     case SFA_PARAM_SPLIT_LENGTH_RATIO:
     case SFA_PARAM_SPLIT_SHORTEST_RATIO:
     case SFA_PARAM_CONTRACT_LENGTH_RATIO: out[0] = 0; out[1] = -0.5; return 2;
@@ -110,6 +113,9 @@ static void round_trip(void **state)
     assert_ok(s, sfa_set_param(s, SFA_PARAM_LARGE_ANGLE, 60));
     assert_ok(s, sfa_set_param(s, SFA_PARAM_FOLD_SAFETY, 1));
     assert_ok(s, sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, 0));
+    /* Open angle ranges: just inside both ends. */
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_RIDGE_TURN_ANGLE, 1e-9));
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_RIDGE_TURN_ANGLE, 179.999));
     sfa_destroy(s);
 }
 
@@ -143,7 +149,7 @@ static void unknown_keys_rejected(void **state)
     sfa_surface *s = make_cube_surface();
     snapshot before, after;
     snapshot_take(s, &before);
-    const int keys[] = {-1, 15, 1000, INT32_MIN, INT32_MAX};
+    const int keys[] = {-1, 16, 17, 1000, INT32_MIN, INT32_MAX};
     for (size_t i = 0; i < sizeof keys / sizeof keys[0]; ++i) {
         double v = 12345;
         assert_error(s, sfa_set_param(s, keys[i], 1.0), SFA_ERR_ARGUMENT, "");

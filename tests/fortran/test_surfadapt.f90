@@ -96,6 +96,7 @@ program test_surfadapt
   integer(c_int32_t) :: nverts, ntris, field_id, i
   integer(c_int32_t), pointer :: api_head(:)
   integer(c_int32_t), allocatable :: tri_out(:, :), ranks(:)
+  integer(c_int32_t) :: vranks(nv)
   integer(c_int32_t) :: bad_tri(3, nt), small_tri(3, 1)
   real(c_double) :: value, dt, dt_taken, t0, theta, c, sn
   real(c_double) :: vel(3, nv), before(3, nv), expected(3, nv), small_xyz(3, 1)
@@ -119,10 +120,10 @@ program test_surfadapt
 
   api = sfa_get_api(int(SFA_HEADER_ABI_VERSION, c_int32_t))
   if (c_associated(api)) then
-    ! The table starts with uint32_t struct_size and abi, then 20 function pointers.
+    ! The table starts with uint32_t struct_size and abi, then 22 function pointers.
     call c_f_pointer(api, api_head, [2])
-    call check('sfa_get_api: struct_size covers the 20 functions', &
-         api_head(1) >= 8 + 20 * c_sizeof(c_null_funptr))
+    call check('sfa_get_api: struct_size covers the 22 functions', &
+         api_head(1) >= 8 + 22 * c_sizeof(c_null_funptr))
     call check('sfa_get_api: abi == SFA_HEADER_ABI_VERSION', api_head(2) == SFA_HEADER_ABI_VERSION)
   else
     call check('sfa_get_api(SFA_HEADER_ABI_VERSION) is not null', .false.)
@@ -292,8 +293,7 @@ program test_surfadapt
 
   ! ------------------------------------------------------------ adaptation
   ! Not implemented in this release: they return SFA_ERR_INTERNAL. These assertions
-  ! change to SFA_OK (and real checks) when smoothing, adaptation and feature
-  ! detection land.
+  ! change to SFA_OK (and real checks) when smoothing and adaptation land.
   rc = sfa_get_mesh_alloc(s, xyz_out, tri_out)
   before = cube_xyz
   if (rc == SFA_OK) before = xyz_out
@@ -301,9 +301,6 @@ program test_surfadapt
   call check('sfa_smooth gives SFA_ERR_INTERNAL (not implemented yet)', rc == SFA_ERR_INTERNAL)
   rc = sfa_adapt(s)
   call check('sfa_adapt gives SFA_ERR_INTERNAL (not implemented yet)', rc == SFA_ERR_INTERNAL)
-  rc = sfa_get_feature_ranks_alloc(s, ranks)
-  call check('sfa_get_feature_ranks gives SFA_ERR_INTERNAL (not implemented yet)', &
-       rc == SFA_ERR_INTERNAL .and. .not. allocated(ranks))
   rc = sfa_get_mesh_alloc(s, xyz_out, tri_out)
   if (rc == SFA_OK) then
     call check('the failed calls left the mesh as it was', &
@@ -311,6 +308,19 @@ program test_surfadapt
   else
     call check('the failed calls left the mesh readable', .false., sfa_error_message(s))
   end if
+
+  ! ------------------------------------------------------------ feature detection
+  ! The (moved and turned) cube: every one of its 8 vertices is a corner, rank 2.
+  rc = sfa_get_feature_ranks_alloc(s, ranks)
+  if (rc == SFA_OK) then
+    call check('sfa_get_feature_ranks_alloc: 8 ranks, all corners (2)', &
+         size(ranks) == nv .and. all(ranks == 2))
+  else
+    call check('sfa_get_feature_ranks_alloc gives SFA_OK', .false., sfa_error_message(s))
+  end if
+  rc = sfa_get_feature_ranks(s, nv - 1, vranks)
+  call check('sfa_get_feature_ranks with a too small capacity gives SFA_ERR_ARGUMENT', &
+       rc == SFA_ERR_ARGUMENT)
 
   call sfa_destroy(s)
   s = c_null_ptr

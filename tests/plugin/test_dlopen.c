@@ -124,6 +124,8 @@ int main(int argc, char **argv)
     MEMBER_SET(measure)
     MEMBER_SET(add_field)
     MEMBER_SET(get_field)
+    MEMBER_SET(get_vertex_frames)
+    MEMBER_SET(get_ridge_edges)
 #undef MEMBER_SET
     if (!check(all_set, "every member of the table is set")) {
         /* Calling through a NULL member would crash instead of reporting. */
@@ -191,6 +193,21 @@ int main(int argc, char **argv)
     rc = api->measure(s, SFA_MEASURE_VOLUME, &volume);
     if (!check(rc == SFA_OK && fabs(volume - 1.0) < 1e-12, "volume is still 1"))
         printf("  status %d, volume %.17g\n", rc, volume);
+
+    /* The members appended for feature detection work through the table too: the cube
+       has its 12 edges as ridges and every vertex is a corner. */
+    int32_t nridges = -1, ranks[8] = {0};
+    rc = api->get_ridge_edges(s, 0, NULL, &nridges, 0);
+    if (!check(rc == SFA_OK && nridges == 12, "get_ridge_edges counts the 12 cube edges"))
+        printf("  status %d, count %d\n", rc, (int)nridges);
+    rc = api->get_feature_ranks(s, 8, ranks);
+    int corners = 0;
+    for (int i = 0; i < 8; i++)
+        corners += ranks[i] == 2;
+    if (!check(rc == SFA_OK && corners == 8, "get_feature_ranks: 8 corners"))
+        printf("  status %d, %d corners\n", rc, corners);
+    double aspect[8];
+    check(api->get_vertex_frames(s, 8, NULL, NULL, aspect) == SFA_OK, "get_vertex_frames");
 
     api->destroy(s);
     check(1, "destroy");

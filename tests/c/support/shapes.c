@@ -2,9 +2,12 @@
 
 #include "icosphere.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+static const double shapes_pi = 3.14159265358979323846;
 
 /* Test support: running out of memory here is not what is being tested. */
 static void *xmalloc(size_t n)
@@ -120,6 +123,216 @@ sfa_mesh_data shape_grid(int nx, int ny, double h)
             memcpy(t, two, sizeof two);
             t += 6;
         }
+    return m;
+}
+
+sfa_mesh_data shape_capped_cylinder(double r, double h, int segments, int rings)
+{
+    const int32_t nring = segments, bottom = (rings + 1) * segments, top = bottom + 1;
+    sfa_mesh_data m = mesh_alloc(bottom + 2, 2 * (rings + 1) * segments);
+    for (int j = 0; j <= rings; ++j)
+        for (int i = 0; i < segments; ++i) {
+            const double phi = 2 * shapes_pi * i / segments;
+            double *p = m.xyz + 3 * (j * nring + i);
+            p[0] = r * cos(phi);
+            p[1] = r * sin(phi);
+            p[2] = -0.5 * h + h * j / rings;
+        }
+    const double centres[6] = {0, 0, -0.5 * h, 0, 0, 0.5 * h};
+    memcpy(m.xyz + 3 * bottom, centres, sizeof centres);
+    int32_t *t = m.tris;
+    for (int j = 0; j < rings; ++j)
+        for (int i = 0; i < segments; ++i) {
+            /* e_phi x e_z = e_r: counter-clockwise in (phi, z) is outward. */
+            const int32_t p00 = j * nring + i, p10 = j * nring + (i + 1) % segments;
+            const int32_t p01 = p00 + nring, p11 = p10 + nring;
+            const int32_t two[6] = {p00, p10, p11, p00, p11, p01};
+            memcpy(t, two, sizeof two);
+            t += 6;
+        }
+    for (int i = 0; i < segments; ++i) {
+        const int32_t i1 = (i + 1) % segments, last = rings * nring;
+        /* Increasing phi turns counter-clockwise seen from +z: reversed on the bottom. */
+        const int32_t caps[6] = {bottom, i1, i, top, last + i, last + i1};
+        memcpy(t, caps, sizeof caps);
+        t += 6;
+    }
+    return m;
+}
+
+sfa_mesh_data shape_ellipsoid(int k, double a, double b, double c)
+{
+    sfa_mesh_data m = shape_icosphere(k, 1.0);
+    for (int32_t v = 0; v < m.nverts; ++v) {
+        m.xyz[3 * v] *= a;
+        m.xyz[3 * v + 1] *= b;
+        m.xyz[3 * v + 2] *= c;
+    }
+    return m;
+}
+
+sfa_mesh_data shape_spherical_cap(double r, double max_angle, int segments, int rings)
+{
+    sfa_mesh_data m = mesh_alloc(1 + rings * segments, segments * (2 * rings - 1));
+    m.xyz[0] = 0;
+    m.xyz[1] = 0;
+    m.xyz[2] = r;
+    for (int j = 1; j <= rings; ++j)
+        for (int i = 0; i < segments; ++i) {
+            const double theta = max_angle * j / rings, phi = 2 * shapes_pi * i / segments;
+            double *p = m.xyz + 3 * (1 + (j - 1) * segments + i);
+            p[0] = r * sin(theta) * cos(phi);
+            p[1] = r * sin(theta) * sin(phi);
+            p[2] = r * cos(theta);
+        }
+    int32_t *t = m.tris;
+    for (int i = 0; i < segments; ++i) {
+        /* Seen from outside (+z at the pole) increasing phi is counter-clockwise. */
+        const int32_t fan[3] = {0, 1 + i, 1 + (i + 1) % segments};
+        memcpy(t, fan, sizeof fan);
+        t += 3;
+    }
+    for (int j = 1; j < rings; ++j)
+        for (int i = 0; i < segments; ++i) {
+            /* e_theta x e_phi = e_r: counter-clockwise in (theta, phi) is outward. */
+            const int32_t p00 = 1 + (j - 1) * segments + i, p01 = 1 + (j - 1) * segments + (i + 1) % segments;
+            const int32_t p10 = p00 + segments, p11 = p01 + segments;
+            const int32_t two[6] = {p00, p10, p11, p00, p11, p01};
+            memcpy(t, two, sizeof two);
+            t += 6;
+        }
+    return m;
+}
+
+shapes_rng rng_seed(uint64_t seed)
+{
+    shapes_rng rng = {seed};
+    return rng;
+}
+
+uint64_t rng_next(shapes_rng *rng)
+{
+    uint64_t z = (rng->state += 0x9E3779B97F4A7C15u);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+    return z ^ (z >> 31);
+}
+
+double rng_uniform(shapes_rng *rng) { return (double)(rng_next(rng) >> 11) * 0x1.0p-53; }
+
+/* A uniform integer in [0, n), n > 0 (the modulo bias is irrelevant at test sizes). */
+static int32_t rng_below(shapes_rng *rng, int32_t n) { return (int32_t)(rng_next(rng) % (uint64_t)n); }
+
+void rotation_axis_angle(const double axis[3], double angle, double R[9])
+{
+    const double len = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+    const double x = axis[0] / len, y = axis[1] / len, z = axis[2] / len;
+    const double c = cos(angle), s = sin(angle), C = 1 - c;
+    const double rot[9] = {c + x * x * C,     x * y * C - z * s, x * z * C + y * s, /* Rodrigues */
+                           y * x * C + z * s, c + y * y * C,     y * z * C - x * s,
+                           z * x * C - y * s, z * y * C + x * s, c + z * z * C};
+    memcpy(R, rot, sizeof rot);
+}
+
+void rotation_random(shapes_rng *rng, double R[9])
+{
+    /* A uniform direction: z uniform in [-1, 1] and a uniform azimuth (Archimedes). */
+    const double z = 2 * rng_uniform(rng) - 1, phi = 2 * shapes_pi * rng_uniform(rng);
+    const double rho = sqrt(1 - z * z);
+    const double axis[3] = {rho * cos(phi), rho * sin(phi), z};
+    rotation_axis_angle(axis, 2 * shapes_pi * rng_uniform(rng), R);
+}
+
+void mesh_rotate_scale(sfa_mesh_data *m, const double R[9], double scale)
+{
+    for (int32_t v = 0; v < m->nverts; ++v) {
+        double *p = m->xyz + 3 * v;
+        const double x[3] = {p[0], p[1], p[2]};
+        for (int i = 0; i < 3; ++i)
+            p[i] = scale * (R[3 * i] * x[0] + R[3 * i + 1] * x[1] + R[3 * i + 2] * x[2]);
+    }
+}
+
+/* A random permutation of 0..n-1 (Fisher-Yates) into perm. */
+static void random_permutation(shapes_rng *rng, int32_t n, int32_t *perm)
+{
+    for (int32_t i = 0; i < n; ++i)
+        perm[i] = i;
+    for (int32_t i = n - 1; i > 0; --i) {
+        const int32_t j = rng_below(rng, i + 1), swap = perm[i];
+        perm[i] = perm[j];
+        perm[j] = swap;
+    }
+}
+
+void mesh_permute(sfa_mesh_data *m, uint64_t seed, int32_t *vert_new, int32_t *tri_new)
+{
+    shapes_rng rng = rng_seed(seed);
+    int32_t *vmap = xmalloc(sizeof(int32_t) * (size_t)m->nverts);
+    int32_t *tmap = xmalloc(sizeof(int32_t) * (size_t)m->ntris);
+    random_permutation(&rng, m->nverts, vmap);
+    random_permutation(&rng, m->ntris, tmap);
+    sfa_mesh_data p = mesh_alloc(m->nverts, m->ntris);
+    for (int32_t v = 0; v < m->nverts; ++v)
+        memcpy(p.xyz + 3 * vmap[v], m->xyz + 3 * v, 3 * sizeof(double));
+    for (int32_t t = 0; t < m->ntris; ++t) {
+        const int32_t shift = rng_below(&rng, 3);
+        for (int k = 0; k < 3; ++k)
+            p.tris[3 * tmap[t] + k] = vmap[m->tris[3 * t + (k + shift) % 3]];
+    }
+    if (vert_new)
+        memcpy(vert_new, vmap, sizeof(int32_t) * (size_t)m->nverts);
+    if (tri_new)
+        memcpy(tri_new, tmap, sizeof(int32_t) * (size_t)m->ntris);
+    free(vmap);
+    free(tmap);
+    mesh_free(m);
+    *m = p;
+}
+
+static int compare_edges(const void *a, const void *b)
+{
+    const int32_t *x = a, *y = b;
+    if (x[0] != y[0])
+        return (x[0] > y[0]) - (x[0] < y[0]);
+    return (x[1] > y[1]) - (x[1] < y[1]);
+}
+
+double mesh_mean_edge_length(const sfa_mesh_data *m)
+{
+    const size_t nh = 3 * (size_t)m->ntris;
+    int32_t *e = xmalloc(sizeof(int32_t) * 2 * nh);
+    for (size_t h = 0; h < nh; ++h) {
+        const int32_t a = m->tris[h], b = m->tris[h % 3 == 2 ? h - 2 : h + 1];
+        e[2 * h] = a < b ? a : b;
+        e[2 * h + 1] = a < b ? b : a;
+    }
+    qsort(e, nh, 2 * sizeof(int32_t), compare_edges);
+    double sum = 0;
+    size_t n = 0;
+    for (size_t h = 0; h < nh; ++h) {
+        if (h > 0 && e[2 * h] == e[2 * h - 2] && e[2 * h + 1] == e[2 * h - 1])
+            continue;
+        const double *p = m->xyz + 3 * e[2 * h], *q = m->xyz + 3 * e[2 * h + 1];
+        sum += sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+        ++n;
+    }
+    free(e);
+    return n ? sum / (double)n : 0;
+}
+
+sfa_mesh_data shape_noisy_icosphere(int k, double r, double fraction, uint64_t seed)
+{
+    sfa_mesh_data m = shape_icosphere(k, r);
+    const double amplitude = fraction * mesh_mean_edge_length(&m);
+    shapes_rng rng = rng_seed(seed);
+    for (int32_t v = 0; v < m.nverts; ++v) {
+        double *p = m.xyz + 3 * v;
+        const double len = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        const double scale = (len + amplitude * (2 * rng_uniform(&rng) - 1)) / len;
+        for (int i = 0; i < 3; ++i)
+            p[i] *= scale;
+    }
     return m;
 }
 

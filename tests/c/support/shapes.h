@@ -13,8 +13,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Number of parameter keys of the API (SFA_PARAM_EDGE_LENGTH .. SFA_PARAM_DROP_UNREFERENCED). */
-#define SHAPES_NPARAMS 15
+/* Number of parameter keys of the API (SFA_PARAM_EDGE_LENGTH .. SFA_PARAM_RIDGE_TURN_ANGLE). */
+#define SHAPES_NPARAMS 16
 
 /* [0,1]^3: 8 vertices, 12 triangles, each face split along one diagonal. */
 sfa_mesh_data shape_unit_cube(void);
@@ -33,6 +33,58 @@ sfa_mesh_data shape_icosphere(int k, double r);
 /* An open, flat patch in the plane z = 0 with nx x ny square cells of side h, normals +z.
  * Vertex (i, j) (0 <= i <= nx, 0 <= j <= ny) is number j*(nx+1) + i, at (i h, j h, 0). */
 sfa_mesh_data shape_grid(int nx, int ny, double h);
+
+/* A closed cylinder of radius r and height h about the z axis, z in [-h/2, h/2]: the side
+ * has `rings` rows of `segments` quads (two triangles each), each cap is a fan around a
+ * centre vertex. Watertight, outward. Vertex j*segments + i (0 <= j <= rings) is on ring j
+ * at angle 2 pi i / segments and z = -h/2 + h j / rings, so rings 0 and `rings` are the
+ * rims; then come the centres of the bottom and the top cap.
+ * (rings + 1) segments + 2 vertices, 2 (rings + 1) segments triangles. */
+sfa_mesh_data shape_capped_cylinder(double r, double h, int segments, int rings);
+
+/* The ellipsoid x^2/a^2 + y^2/b^2 + z^2/c^2 = 1: the unit icosphere subdivided k times,
+ * scaled by (a, b, c) (so the triangles are stretched where the semi-axes differ). */
+sfa_mesh_data shape_ellipsoid(int k, double a, double b, double c);
+
+/* An open spherical cap of radius r about the origin around +z, polar angles up to
+ * `max_angle` (radians): a pole vertex (number 0) with a fan, then `rings` circles of
+ * `segments` vertices (vertex 1 + (j-1)*segments + i at polar angle j max_angle / rings,
+ * azimuth 2 pi i / segments). The last `segments` vertices form the boundary. Outward. */
+sfa_mesh_data shape_spherical_cap(double r, double max_angle, int segments, int rings);
+
+/* The icosphere of shape_icosphere(k, r) with every vertex moved along its radius by a
+ * uniform random amount in [-fraction, fraction] times the mean edge length; the same
+ * `seed` gives the same mesh on every platform. */
+sfa_mesh_data shape_noisy_icosphere(int k, double r, double fraction, uint64_t seed);
+
+/* A small deterministic random number generator (SplitMix64), so that generated meshes
+ * do not depend on the C library's rand(). */
+typedef struct shapes_rng {
+    uint64_t state;
+} shapes_rng;
+shapes_rng rng_seed(uint64_t seed);
+uint64_t rng_next(shapes_rng *rng);
+/* Uniform in [0, 1), 53 random bits. */
+double rng_uniform(shapes_rng *rng);
+
+/* Rotation matrices, row-major: y = R x is y[i] = sum_k R[3 i + k] x[k]. */
+/* The rotation by `angle` radians about `axis` (any non-zero length; right-hand rule). */
+void rotation_axis_angle(const double axis[3], double angle, double R[9]);
+/* A rotation drawn from `rng` (uniform axis direction, angle in [0, 2 pi)). */
+void rotation_random(shapes_rng *rng, double R[9]);
+
+/* x <- scale * R x for every vertex (R row-major, as above; scale > 0 keeps the
+ * orientation). */
+void mesh_rotate_scale(sfa_mesh_data *m, const double R[9], double scale);
+
+/* Renumbers the vertices and the triangles in a random order drawn from `seed`, and starts
+ * each triangle at a random corner (a cyclic shift, so the orientation is kept). Vertex v
+ * of the input is vertex vert_new[v] of the result and triangle t is triangle tri_new[t];
+ * either array (nverts, ntris entries) may be NULL when not wanted. */
+void mesh_permute(sfa_mesh_data *m, uint64_t seed, int32_t *vert_new, int32_t *tri_new);
+
+/* Mean length of the undirected edges (each interior edge counted once). */
+double mesh_mean_edge_length(const sfa_mesh_data *m);
 
 /* A deep copy. */
 sfa_mesh_data mesh_copy(const sfa_mesh_data *m);
