@@ -5,6 +5,7 @@
  * enough that the whole case stays within a time budget; otherwise its line says why not. */
 #define _POSIX_C_SOURCE 199309L
 #include "icosphere.h"
+#include "timing.h"
 
 #include "surfadapt.h"
 
@@ -16,25 +17,6 @@ enum { runs = 5 };
 
 /* Seconds one case (all its runs) may take before the largest level is left out. */
 static const double budget_s = 20.0;
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int compare(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *samples)
-{
-    qsort(samples, runs, sizeof *samples, compare);
-    return samples[runs / 2];
-}
 
 static void report(const char *name, int32_t nverts, int32_t ntris, double seconds)
 {
@@ -89,7 +71,7 @@ static int run_case(const char *name, int (*call)(const sfa_surface *, int32_t, 
         if (r >= 0)
             samples[r] = seconds;
     }
-    report(name, nverts, ntris, median(samples));
+    report(name, nverts, ntris, median(samples, runs));
     return 0;
 }
 

@@ -3,6 +3,7 @@
  * per case: the median of several runs, in seconds and nanoseconds per element. */
 #define _POSIX_C_SOURCE 199309L
 #include "icosphere.h"
+#include "timing.h"
 
 #include "surfadapt.h"
 
@@ -11,25 +12,6 @@
 #include <time.h>
 
 enum { runs = 7 };
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int compare(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *samples)
-{
-    qsort(samples, runs, sizeof *samples, compare);
-    return samples[runs / 2];
-}
 
 /* A rigid rotation about the z axis: no triangle folds, so every step is taken whole. */
 static void rotation(void *ctx, int32_t n, const double *xyz, double t, double *vel)
@@ -72,7 +54,7 @@ int main(void)
                 return 1;
             samples[r] = now() - t0;
         }
-        report("set_mesh", nverts, ntris, median(samples), "triangle", ntris);
+        report("set_mesh", nverts, ntris, median(samples, runs), "triangle", ntris);
 
         double *vel = malloc(sizeof(double) * 3 * (size_t)nverts);
         rotation(NULL, nverts, xyz, 0, vel);
@@ -84,8 +66,8 @@ int main(void)
                 return 1;
             samples[r] = now() - t0;
         }
-        report("move", nverts, ntris, median(samples), "vertex", nverts);
-        const double move_s = median(samples);
+        report("move", nverts, ntris, median(samples, runs), "vertex", nverts);
+        const double move_s = median(samples, runs);
 
         /* Baseline in the same run: the bare update x += dt v a host would write itself,
          * without fold control; the ratio is what the fold control costs. */
@@ -95,7 +77,7 @@ int main(void)
                 xyz[i] += 1e-3 * vel[i];
             samples[r] = now() - t0;
         }
-        const double bare_s = median(samples);
+        const double bare_s = median(samples, runs);
         printf("{\"bench\":\"move_vs_bare_update\",\"vertices\":%d,\"bare_median_s\":%.6f,\"ratio\":%.2f}\n",
                nverts, bare_s, move_s / bare_s);
 
@@ -106,7 +88,7 @@ int main(void)
                 return 1;
             samples[r] = now() - t0;
         }
-        report("advect", nverts, ntris, median(samples), "vertex", nverts);
+        report("advect", nverts, ntris, median(samples, runs), "vertex", nverts);
 
         free(vel);
         free(xyz);

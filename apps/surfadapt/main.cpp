@@ -53,6 +53,29 @@ double measure(const sfa_surface *s, int quantity)
     return value;
 }
 
+// Reads an OBJ/OFF file into a new surface; prints why and returns nullptr on failure.
+sfa_surface *surface_from_file(const char *path, bool drop_unreferenced)
+{
+    sfa_mesh_data mesh{};
+    char error[512];
+    if (mesh_read(path, &mesh, error, sizeof error) != 0) {
+        std::fprintf(stderr, "surfadapt: %s\n", error);
+        return nullptr;
+    }
+    sfa_surface *s = nullptr;
+    int rc = sfa_create(&s);
+    if (rc == SFA_OK) {
+        sfa_set_param(s, SFA_PARAM_DROP_UNREFERENCED, drop_unreferenced ? 1 : 0);
+        rc = sfa_set_mesh(s, mesh.nverts, mesh.xyz, mesh.ntris, mesh.tris, 0);
+        if (rc != SFA_OK) {
+            fail(s, path);
+            s = nullptr;
+        }
+    }
+    mesh_free(&mesh);
+    return s;
+}
+
 // Reads an integer option value, or exits with a message.
 int int_option(int argc, char **argv, int &i, int lo, int hi)
 {
@@ -148,20 +171,9 @@ int info(int argc, char **argv)
             return 2;
         }
     }
-    sfa_mesh_data mesh{};
-    char error[512];
-    if (mesh_read(argv[2], &mesh, error, sizeof error) != 0) {
-        std::fprintf(stderr, "surfadapt: %s\n", error);
+    sfa_surface *s = surface_from_file(argv[2], drop);
+    if (!s)
         return 1;
-    }
-    sfa_surface *s = nullptr;
-    if (sfa_create(&s) != SFA_OK)
-        return 1;
-    sfa_set_param(s, SFA_PARAM_DROP_UNREFERENCED, drop ? 1 : 0);
-    const int rc = sfa_set_mesh(s, mesh.nverts, mesh.xyz, mesh.ntris, mesh.tris, 0);
-    mesh_free(&mesh);
-    if (rc != SFA_OK)
-        return fail(s, argv[2]);
     int32_t nverts = 0, ntris = 0;
     sfa_get_counts(s, &nverts, &ntris);
     std::printf("%s: %d vertices, %d triangles\n", argv[2], nverts, ntris);
@@ -190,20 +202,9 @@ int features(int argc, char **argv)
         }
     }
     const char *in = argv[2], *out = argv[3];
-    sfa_mesh_data mesh{};
-    char error[512];
-    if (mesh_read(in, &mesh, error, sizeof error) != 0) {
-        std::fprintf(stderr, "surfadapt: %s\n", error);
+    sfa_surface *s = surface_from_file(in, drop);
+    if (!s)
         return 1;
-    }
-    sfa_surface *s = nullptr;
-    if (sfa_create(&s) != SFA_OK)
-        return 1;
-    sfa_set_param(s, SFA_PARAM_DROP_UNREFERENCED, drop ? 1 : 0);
-    const int rc = sfa_set_mesh(s, mesh.nverts, mesh.xyz, mesh.ntris, mesh.tris, 0);
-    mesh_free(&mesh);
-    if (rc != SFA_OK)
-        return fail(s, in);
 
     // Read the mesh back: dropping unreferenced vertices renumbers them, and the ranks and
     // frames follow the library's numbering.
