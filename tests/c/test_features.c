@@ -22,35 +22,6 @@ static void features_free(features *f)
     memset(f, 0, sizeof *f);
 }
 
-static int compare_pairs(const void *a, const void *b)
-{
-    const int32_t *x = a, *y = b;
-    return x[0] != y[0] ? (x[0] > y[0]) - (x[0] < y[0]) : (x[1] > y[1]) - (x[1] < y[1]);
-}
-
-/* The sorted undirected edges of a mesh, (smaller, larger), as 2*(*count) indices. */
-static int32_t *mesh_edges(const sfa_mesh_data *m, int32_t *count)
-{
-    const size_t nh = 3 * (size_t)m->ntris;
-    int32_t *e = malloc(sizeof(int32_t) * 2 * (nh ? nh : 1));
-    assert_non_null(e);
-    for (size_t h = 0; h < nh; ++h) {
-        const int32_t a = m->tris[h], b = m->tris[h % 3 == 2 ? h - 2 : h + 1];
-        e[2 * h] = a < b ? a : b;
-        e[2 * h + 1] = a < b ? b : a;
-    }
-    qsort(e, nh, 2 * sizeof(int32_t), compare_pairs);
-    size_t n = 0;
-    for (size_t h = 0; h < nh; ++h)
-        if (n == 0 || compare_pairs(e + 2 * h, e + 2 * (n - 1)) != 0) {
-            e[2 * n] = e[2 * h];
-            e[2 * n + 1] = e[2 * h + 1];
-            ++n;
-        }
-    *count = (int32_t)n;
-    return e;
-}
-
 /* Reads ranks and ridge edges and checks what the contract says of any mesh: ranks are 0, 1
  * or 2; ridge edges are edges of the mesh, smaller index first, sorted, without repeats; a
  * rank-1 vertex is on exactly two ridge edges; where curves end or meet (one, three or more
@@ -86,10 +57,10 @@ static features features_of(const sfa_surface *s)
         const int32_t *r = f.ridges + 2 * e;
         if (!(r[0] >= 0 && r[0] < r[1] && r[1] < f.nverts))
             fail_msg("ridge edge %d is (%d, %d) on %d vertices", (int)e, (int)r[0], (int)r[1], (int)f.nverts);
-        if (e > 0 && compare_pairs(r - 2, r) >= 0)
+        if (e > 0 && compare_index_pairs(r - 2, r) >= 0)
             fail_msg("ridge edges %d and %d are out of order: (%d, %d), (%d, %d)", (int)e - 1, (int)e, (int)r[-2],
                      (int)r[-1], (int)r[0], (int)r[1]);
-        if (!bsearch(r, edges, (size_t)nedges, 2 * sizeof(int32_t), compare_pairs))
+        if (!bsearch(r, edges, (size_t)nedges, 2 * sizeof(int32_t), compare_index_pairs))
             fail_msg("ridge edge (%d, %d) is not an edge of the mesh", (int)r[0], (int)r[1]);
         ++f.degree[r[0]];
         ++f.degree[r[1]];
@@ -626,7 +597,7 @@ static void check_invariance(const sfa_mesh_data *m, const char *name)
             back[2 * e] = a < b ? a : b;
             back[2 * e + 1] = a < b ? b : a;
         }
-        qsort(back, (size_t)g.nridges, 2 * sizeof(int32_t), compare_pairs);
+        qsort(back, (size_t)g.nridges, 2 * sizeof(int32_t), compare_index_pairs);
         assert_memory_equal(back, f.ridges, sizeof(int32_t) * 2 * (size_t)f.nridges);
         free(back);
         free(inverse);

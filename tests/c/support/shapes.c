@@ -290,7 +290,7 @@ void mesh_permute(sfa_mesh_data *m, uint64_t seed, int32_t *vert_new, int32_t *t
     *m = p;
 }
 
-static int compare_edges(const void *a, const void *b)
+int compare_index_pairs(const void *a, const void *b)
 {
     const int32_t *x = a, *y = b;
     if (x[0] != y[0])
@@ -298,24 +298,35 @@ static int compare_edges(const void *a, const void *b)
     return (x[1] > y[1]) - (x[1] < y[1]);
 }
 
-double mesh_mean_edge_length(const sfa_mesh_data *m)
+int32_t *mesh_edges(const sfa_mesh_data *m, int32_t *count)
 {
     const size_t nh = 3 * (size_t)m->ntris;
-    int32_t *e = xmalloc(sizeof(int32_t) * 2 * nh);
+    int32_t *e = xmalloc(sizeof(int32_t) * 2 * (nh ? nh : 1));
     for (size_t h = 0; h < nh; ++h) {
         const int32_t a = m->tris[h], b = m->tris[h % 3 == 2 ? h - 2 : h + 1];
         e[2 * h] = a < b ? a : b;
         e[2 * h + 1] = a < b ? b : a;
     }
-    qsort(e, nh, 2 * sizeof(int32_t), compare_edges);
-    double sum = 0;
+    qsort(e, nh, 2 * sizeof(int32_t), compare_index_pairs);
     size_t n = 0;
-    for (size_t h = 0; h < nh; ++h) {
-        if (h > 0 && e[2 * h] == e[2 * h - 2] && e[2 * h + 1] == e[2 * h - 1])
-            continue;
-        const double *p = m->xyz + 3 * e[2 * h], *q = m->xyz + 3 * e[2 * h + 1];
+    for (size_t h = 0; h < nh; ++h)
+        if (n == 0 || compare_index_pairs(e + 2 * h, e + 2 * (n - 1)) != 0) {
+            e[2 * n] = e[2 * h];
+            e[2 * n + 1] = e[2 * h + 1];
+            ++n;
+        }
+    *count = (int32_t)n;
+    return e;
+}
+
+double mesh_mean_edge_length(const sfa_mesh_data *m)
+{
+    int32_t n = 0;
+    int32_t *e = mesh_edges(m, &n);
+    double sum = 0;
+    for (int32_t k = 0; k < n; ++k) {
+        const double *p = m->xyz + 3 * e[2 * k], *q = m->xyz + 3 * e[2 * k + 1];
         sum += sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
-        ++n;
     }
     free(e);
     return n ? sum / (double)n : 0;

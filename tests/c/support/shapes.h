@@ -86,6 +86,13 @@ void mesh_permute(sfa_mesh_data *m, uint64_t seed, int32_t *vert_new, int32_t *t
 /* Mean length of the undirected edges (each interior edge counted once). */
 double mesh_mean_edge_length(const sfa_mesh_data *m);
 
+/* The undirected edges of a mesh as sorted pairs (smaller, larger): 2*(*count) indices,
+ * malloc'ed (free them). */
+int32_t *mesh_edges(const sfa_mesh_data *m, int32_t *count);
+
+/* qsort/bsearch order of (int32_t, int32_t) pairs. */
+int compare_index_pairs(const void *a, const void *b);
+
 /* A deep copy. */
 sfa_mesh_data mesh_copy(const sfa_mesh_data *m);
 
