@@ -328,13 +328,18 @@ int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t, double dt
 /* ------------------------------------------------------------ adaptation */
 
 /**
- * Anisotropic vertex redistribution (paper §3.2): `iterations` Jacobi sweeps that move
- * vertices within their null space. Connectivity and vertex order do not change, so
- * host arrays stay valid.
+ * Anisotropic vertex redistribution (paper §3.2): `iterations` Jacobi sweeps. In each, the
+ * surface is analysed once (sfa_get_feature_ranks(), sfa_get_vertex_frames()); every smooth
+ * vertex moves in its tangent plane towards the point that balances its edges' lengths in
+ * the anisotropic metric, every ridge or boundary vertex along the line through its two
+ * ridge neighbours, corners not at all; a correction along the primary space cancels each
+ * move's first-order change of the enclosed volume. A vertex whose move would fold a
+ * triangle stays put for that sweep. Fields are interpolated at the new positions.
+ * Connectivity and vertex order do not change, so host arrays stay valid.
  * @param s          the surface.
  * @param iterations number of sweeps, >= 0.
- * @return ::SFA_OK, ::SFA_ERR_ARGUMENT, ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY,
- *         ::SFA_ERR_INTERNAL (in this release: "not implemented yet").
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (also: metric min angle not below max angle),
+ *         ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY.
  */
 int sfa_smooth(sfa_surface *s, int32_t iterations);
 

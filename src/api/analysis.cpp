@@ -1,34 +1,12 @@
 // Analysis: sfa_measure, sfa_get_feature_ranks, sfa_get_vertex_frames, sfa_get_ridge_edges.
 #include "api/boundary.hpp"
 
-#include "geometry/analysis.hpp"
+#include "api/analysis_settings.hpp"
 #include "geometry/measures.hpp"
 
 using namespace sfa;
 
 namespace {
-
-constexpr double radians = 3.14159265358979323846 / 180;
-
-// The analysis of the current mesh with the surface's parameters. Computed on demand:
-// it costs well under a microsecond per vertex, and a cache would have to follow every
-// change of mesh or parameter.
-SurfaceAnalysis current_analysis(const sfa_surface *s)
-{
-    const Parameters &p = s->params;
-    const MetricBounds bounds{p.get(Param::metric_min_angle) * radians, p.get(Param::metric_max_angle) * radians,
-                              p.get(Param::anisotropic) != 0};
-    if (bounds.anisotropic && !(bounds.lower_ratio < bounds.upper_ratio)) {
-        char message[200];
-        std::snprintf(message, sizeof message,
-                      "SFA_PARAM_METRIC_MIN_ANGLE (%g) must be smaller than SFA_PARAM_METRIC_MAX_ANGLE (%g)",
-                      p.get(Param::metric_min_angle), p.get(Param::metric_max_angle));
-        fail(Status::argument, message);
-    }
-    const FeatureThresholds thresholds{p.get(Param::ridge_angle) * radians, p.get(Param::corner_angle) * radians,
-                                       p.get(Param::ridge_turn_angle) * radians};
-    return analyze_surface(s->mesh, thresholds, bounds);
-}
 
 void require_capacity(const sfa_surface *s, int32_t capacity)
 {
@@ -76,7 +54,7 @@ SFA_EXPORT int sfa_get_feature_ranks(const sfa_surface *s, int32_t capacity, int
         require(ranks != nullptr, "ranks is NULL");
         require_mesh(s);
         require_capacity(s, capacity);
-        const SurfaceAnalysis analysis = current_analysis(s);
+        const SurfaceAnalysis analysis = current_analysis(s, s->mesh);
         for (size_t v = 0; v < analysis.features.rank.size(); ++v)
             ranks[v] = analysis.features.rank[v];
     });
@@ -88,7 +66,7 @@ SFA_EXPORT int sfa_get_vertex_frames(const sfa_surface *s, int32_t capacity, dou
     return call(s, "sfa_get_vertex_frames", [&] {
         require_mesh(s);
         require_capacity(s, capacity);
-        const SurfaceAnalysis analysis = current_analysis(s);
+        const SurfaceAnalysis analysis = current_analysis(s, s->mesh);
         for (size_t v = 0; v < analysis.metric.size(); ++v) {
             const VertexMetric &m = analysis.metric[v];
             for (int k = 0; k < 3; ++k) {
@@ -109,7 +87,7 @@ SFA_EXPORT int sfa_get_ridge_edges(const sfa_surface *s, int32_t capacity, int32
     return call(s, "sfa_get_ridge_edges", [&] {
         require(index_base == 0 || index_base == 1, "index_base must be 0 or 1");
         require_mesh(s);
-        const SurfaceAnalysis analysis = current_analysis(s);
+        const SurfaceAnalysis analysis = current_analysis(s, s->mesh);
         const auto &ridges = analysis.features.ridge_edges;
         const int32_t found = static_cast<int32_t>(ridges.size());
         if (count)

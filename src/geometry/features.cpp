@@ -29,6 +29,29 @@ std::vector<int8_t> candidate_ranks(const TriMesh &mesh, const std::vector<Quadr
     return rank;
 }
 
+// The eigenvalue ratios weigh the two sides of a ridge by area: a vertex whose fan has a
+// sliver on one side (a jittered or graded mesh) can fall below chi_c although it sits on
+// a sharp edge. So the edges vote too: a vertex on two edges whose dihedral angle reaches
+// the ridge angle is a ridge candidate, on three or more a corner candidate (curves meet).
+std::vector<int8_t> promoted_by_edges(const TriMesh &mesh, std::vector<int8_t> candidate,
+                                      const std::vector<Vec3> &area_vectors, const FeatureThresholds &thresholds)
+{
+    std::vector<int32_t> sharp(mesh.pos.size(), 0);
+    for (int32_t h = 0; h < static_cast<int32_t>(mesh.opp.size()); ++h) {
+        const int32_t g = mesh.opp[h];
+        if (g >= 0 && g < h)
+            continue;
+        if (g < 0 || angle_between(area_vectors[TriMesh::face(h)], area_vectors[TriMesh::face(g)]) >=
+                         thresholds.ridge_angle) {
+            ++sharp[mesh.tail(h)];
+            ++sharp[mesh.head(h)];
+        }
+    }
+    for (size_t v = 0; v < candidate.size(); ++v)
+        candidate[v] = std::max<int8_t>(candidate[v], sharp[v] >= 3 ? 2 : sharp[v] == 2 ? 1 : 0);
+    return candidate;
+}
+
 // A boundary edge outranks every dihedral angle (at most pi).
 constexpr double boundary_strength = 4;
 
@@ -102,7 +125,8 @@ std::vector<char> pruned_edges(const TriMesh &mesh, const std::vector<int8_t> &c
 Features detect_features(const TriMesh &mesh, const std::vector<QuadricEigen> &eigen,
                          const std::vector<Vec3> &area_vectors, const FeatureThresholds &thresholds)
 {
-    const std::vector<int8_t> candidate = candidate_ranks(mesh, eigen, thresholds);
+    const std::vector<int8_t> candidate = promoted_by_edges(mesh, candidate_ranks(mesh, eigen, thresholds),
+                                                            area_vectors, thresholds);
     const double chi_c = ratio_of_angle(thresholds.ridge_angle);
     const std::vector<double> strength = candidate_edges(mesh, candidate, area_vectors, thresholds);
 

@@ -23,7 +23,10 @@ VertexMetric vertex_metric(const QuadricEigen &eigen, const Vec3 &outward, const
 {
     VertexMetric metric;
     metric.normal = eigen.e(0).dot(outward) < 0 ? Vec3(-eigen.e(0)) : eigen.e(0);
-    metric.major = eigen.e(1);
+    // e1 is well separated wherever it matters and so accurate to round-off; e2 and e3 of a
+    // nearly flat vertex are only as accurate as the solver's tolerance. Making the tangent
+    // frame exactly orthogonal to e1 keeps motion in it exactly within the tangent plane.
+    metric.major = (eigen.e(1) - eigen.e(1).dot(metric.normal) * metric.normal).normalized();
     // A right-handed frame (e2, e3, e1), so that tangent coordinates keep their orientation.
     metric.minor = metric.normal.cross(metric.major);
     if (!bounds.anisotropic) {

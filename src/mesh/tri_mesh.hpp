@@ -37,6 +37,21 @@ struct TriMesh {
     // The next half-edge leaving the same vertex, counter-clockwise; -1 past a boundary.
     int32_t rotate_ccw(int32_t h) const { return opp[prev(h)]; }
 
+    // Calls fn(w, h) for every neighbour w of v, with h the half-edge of the edge (v, w)
+    // seen from v's fans: leaving v (v -> w), or for the last neighbour of a boundary vertex
+    // the boundary half-edge arriving at v (w -> v).
+    template <class Fn>
+    void for_each_neighbour(int32_t v, Fn &&fn) const {
+        int32_t last = -1;
+        for_each_outgoing(v, [&](int32_t h) {
+            fn(head(h), h);
+            last = h;
+        });
+        const int32_t incoming = prev(last);
+        if (opp[incoming] < 0)
+            fn(tail(incoming), incoming);
+    }
+
     // Calls fn(h) for every half-edge leaving v, counter-clockwise from v2h[v].
     template <class Fn>
     void for_each_outgoing(int32_t v, Fn &&fn) const {

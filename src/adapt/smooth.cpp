@@ -1,0 +1,128 @@
+#include "adapt/smooth.hpp"
+
+#include "motion/fold_time.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sfa {
+namespace {
+
+using Frame = Eigen::Matrix<double, 3, 2>;
+
+// Smooth vertex (§3.2): each neighbour's edge midpoint m_q is mapped into the metric space
+// of its edge, u_q = sqrt(M_half) T^T (m_q - p) with M_half = (M_p + M_q seen from p) / 2,
+// the images are averaged, and the average is mapped back through the mean edge metric.
+// At equilibrium the edges have equal metric lengths (eq. 4): a neighbour across a metric
+// k times stronger ends up sqrt(k) times closer, not k times as a plain metric-weighted
+// average of midpoints would make it. With the identity metric this is the average of the
+// midpoints: half a Laplacian step, which keeps the Jacobi iteration stable undamped.
+Vec3 tangent_target(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t v)
+{
+    const VertexMetric &mp = analysis.metric[v];
+    const Frame frame = mp.frame();
+    Eigen::Matrix2d sum_metric = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d sum_image = Eigen::Vector2d::Zero();
+    int count = 0;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> root;
+    mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
+        const Eigen::Matrix2d half = 0.5 * (mp.tensor() + tensor_in_frame(analysis.metric[w], mp));
+        root.computeDirect(half);
+        sum_metric += half;
+        sum_image += root.operatorSqrt() * (frame.transpose() * (0.5 * (mesh.pos[w] - mesh.pos[v])));
+        ++count;
+    });
+    root.computeDirect(sum_metric / count);
+    return frame * (root.operatorInverseSqrt() * (sum_image / count));
+}
+
+// Ridge (or boundary) vertex: only along the line through its two ridge neighbours, so
+// that straight ridges stay exactly straight; the same equal-metric-length balance as
+// tangent_target, in one dimension: the midpoints weighted by the square root of the edge
+// metric along the line.
+Vec3 ridge_target(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t v, Vec3 &direction)
+{
+    int32_t ends[2] = {-1, -1}, found = 0;
+    mesh.for_each_neighbour(v, [&](int32_t w, int32_t h) {
+        if (analysis.features.ridge_halfedge[h] && found < 2)
+            ends[found++] = w;
+    });
+    direction = (mesh.pos[ends[1]] - mesh.pos[ends[0]]).normalized();
+    const VertexMetric &mp = analysis.metric[v];
+    const Frame frame = mp.frame();
+    double sum_weight = 0, sum_moment = 0;
+    for (int32_t w : ends) {
+        const Eigen::Matrix2d half = 0.5 * (mp.tensor() + tensor_in_frame(analysis.metric[w], mp));
+        const Eigen::Vector2d d = frame.transpose() * direction;
+        // Along a line the frame may not see (a ridge leaving the tangent plane), fall back
+        // to the physical length.
+        const double weight = std::sqrt(std::max(d.dot(half * d), 1e-12));
+        sum_weight += weight;
+        sum_moment += weight * direction.dot(0.5 * (mesh.pos[w] - mesh.pos[v]));
+    }
+    return sum_moment / sum_weight * direction;
+}
+
+// The gradient of the enclosed volume with respect to one vertex: moving v alone by d
+// changes sum a.(b x c)/6 by exactly gradient.d, since each term is linear in v.
+Vec3 volume_gradient(const TriMesh &mesh, int32_t v)
+{
+    Vec3 gradient = Vec3::Zero();
+    mesh.for_each_outgoing(v, [&](int32_t h) {
+        const Triangle &t = mesh.tri[TriMesh::face(h)];
+        const int k = h % 3; // v is corner k
+        gradient += mesh.pos[t[(k + 1) % 3]].cross(mesh.pos[t[(k + 2) % 3]]);
+    });
+    return gradient / 6;
+}
+
+// Adds to the tangential motion a component along `across` (within the primary space)
+// that cancels its first-order volume change, in the spirit of Jiao's volume-conserving
+// smoothing (the paper's reference [22]).
+Vec3 volume_corrected(const Vec3 &motion, const Vec3 &gradient, const Vec3 &across)
+{
+    const double rate = gradient.dot(across);
+    if (std::abs(rate) <= 1e-12 * gradient.norm() * across.norm())
+        return motion;
+    return motion - gradient.dot(motion) / rate * across;
+}
+
+} // namespace
+
+std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &analysis)
+{
+    const int32_t n = mesh.num_vertices();
+    std::vector<Vec3> motion(n, Vec3::Zero());
+    for (int32_t v = 0; v < n; ++v) {
+        const int rank = analysis.features.rank[v];
+        if (rank == 2)
+            continue; // corners never move
+        const Vec3 gradient = volume_gradient(mesh, v);
+        if (rank == 0) {
+            motion[v] = volume_corrected(tangent_target(mesh, analysis, v), gradient, analysis.metric[v].normal);
+        } else {
+            Vec3 direction;
+            const Vec3 along = ridge_target(mesh, analysis, v, direction);
+            // The part of the volume gradient across the ridge line is in the primary space.
+            motion[v] = volume_corrected(along, gradient, gradient - gradient.dot(direction) * direction);
+        }
+    }
+
+    // Jacobi moves can still fold a triangle where neighbours move towards each other:
+    // the vertices of such a triangle stay where they were in this sweep. Each round stops
+    // at least one more vertex, so this ends.
+    std::vector<Vec3> moved(n);
+    for (;;) {
+        for (int32_t v = 0; v < n; ++v)
+            moved[v] = mesh.pos[v] + motion[v];
+        const int32_t folded = first_folded_triangle(mesh, moved);
+        if (folded < 0)
+            return moved;
+        for (int32_t v : mesh.tri[folded])
+            motion[v] = Vec3::Zero();
+    }
+}
+
+} // namespace sfa

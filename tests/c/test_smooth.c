@@ -1,0 +1,226 @@
+/* Anisotropic smoothing (sfa_smooth, paper §3.2): shape quality improves while volume,
+ * surface, features and host fields are kept. */
+#include "support/testing.h"
+
+#ifndef SFA_NO_ALLOC_HOOK
+#include "alloc_hook/alloc_hook.h"
+#endif
+
+/* A deterministic uniform number in [-1, 1]. */
+static double jitter(uint64_t *state)
+{
+    *state = *state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*state >> 11) / (double)(1ULL << 53) * 2 - 1;
+}
+
+static sfa_surface *surface_of(const sfa_mesh_data *m)
+{
+    char err[512];
+    sfa_surface *s = surface_from(m, 0, err, sizeof err);
+    if (!s)
+        fail_msg("%s", err);
+    return s;
+}
+
+/* A unit sphere whose vertices were moved tangentially by up to a third of an edge. */
+static void jittered_sphere_gets_better_angles_and_keeps_volume_and_shape(void **state)
+{
+    (void)state;
+    sfa_mesh_data m = shape_icosphere(4, 1.0);
+    const double third = mesh_mean_edge_length(&m) / 3;
+    uint64_t seed = 7;
+    for (int32_t v = 0; v < m.nverts; ++v) {
+        double *p = m.xyz + 3 * v, d[3];
+        for (int k = 0; k < 3; ++k)
+            d[k] = jitter(&seed);
+        const double radial = d[0] * p[0] + d[1] * p[1] + d[2] * p[2];
+        double norm = 0;
+        for (int k = 0; k < 3; ++k) {
+            d[k] -= radial * p[k];
+            norm += d[k] * d[k];
+        }
+        const double step = third * fabs(jitter(&seed)) / sqrt(norm);
+        double length = 0;
+        for (int k = 0; k < 3; ++k) {
+            p[k] += step * d[k];
+            length += p[k] * p[k];
+        }
+        for (int k = 0; k < 3; ++k)
+            p[k] /= sqrt(length);
+    }
+    sfa_surface *s = surface_of(&m);
+    const double volume = measure(s, SFA_MEASURE_VOLUME), min_angle = measure(s, SFA_MEASURE_MIN_ANGLE);
+    assert_int_equal(sfa_smooth(s, 20), SFA_OK);
+    const double new_volume = measure(s, SFA_MEASURE_VOLUME), new_min_angle = measure(s, SFA_MEASURE_MIN_ANGLE);
+    sfa_mesh_data out = read_back(s);
+    double off_sphere = 0;
+    for (int32_t v = 0; v < out.nverts; ++v) {
+        const double *p = out.xyz + 3 * v;
+        off_sphere = fmax(off_sphere, fabs(sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - 1));
+    }
+    print_message("sphere: min angle %.2f -> %.2f deg, volume change %.2e, off the sphere %.2e\n", min_angle,
+                  new_min_angle, (new_volume - volume) / volume, off_sphere);
+    assert_true(new_min_angle > min_angle + 5);
+    assert_true(fabs(new_volume - volume) < 1e-4 * volume);
+    assert_true(off_sphere < 2e-3);
+    mesh_free(&out);
+    mesh_free(&m);
+    sfa_destroy(s);
+}
+
+/* A 2 x 1 x 0.5 box with face vertices jittered in their planes and edge vertices along
+ * their edges: corners stay put, edge vertices on their lines, face vertices on their
+ * planes, the volume is unchanged, the angles improve. */
+static void jittered_box_keeps_corners_edges_planes_and_volume(void **state)
+{
+    (void)state;
+    const double lo[3] = {0, 0, 0}, hi[3] = {2, 1, 0.5};
+    const int n = 8;
+    sfa_mesh_data m = shape_box(n, lo, hi);
+    uint64_t seed = 11;
+    for (int32_t v = 0; v < m.nverts; ++v)
+        for (int k = 0; k < 3; ++k) {
+            double *x = m.xyz + 3 * v + k;
+            if (*x != lo[k] && *x != hi[k])
+                *x += 0.3 * (hi[k] - lo[k]) / n * jitter(&seed);
+        }
+    sfa_surface *s = surface_of(&m);
+    const double volume = measure(s, SFA_MEASURE_VOLUME), min_angle = measure(s, SFA_MEASURE_MIN_ANGLE);
+    assert_int_equal(sfa_smooth(s, 10), SFA_OK);
+    sfa_mesh_data out = read_back(s);
+    int moved = 0;
+    for (int32_t v = 0; v < m.nverts; ++v) {
+        int fixed = 0;
+        for (int k = 0; k < 3; ++k) {
+            const double before = m.xyz[3 * v + k], after = out.xyz[3 * v + k];
+            if (before == lo[k] || before == hi[k]) {
+                ++fixed;
+                if (fabs(after - before) > 1e-12)
+                    fail_msg("vertex %d left its plane: coordinate %d %.17g -> %.17g", v, k, before, after);
+            } else
+                moved += after != before;
+        }
+        if (fixed == 3)
+            for (int k = 0; k < 3; ++k)
+                assert_true(out.xyz[3 * v + k] == m.xyz[3 * v + k]); /* corners do not move at all */
+    }
+    const double new_volume = measure(s, SFA_MEASURE_VOLUME), new_min_angle = measure(s, SFA_MEASURE_MIN_ANGLE);
+    print_message("box: min angle %.2f -> %.2f deg, volume %.17g -> %.17g, %d coordinates moved\n", min_angle,
+                  new_min_angle, volume, new_volume, moved);
+    assert_true(moved > m.nverts);
+    assert_true(fabs(new_volume - volume) <= 1e-12);
+    assert_true(new_min_angle > min_angle);
+    mesh_free(&out);
+    mesh_free(&m);
+    sfa_destroy(s);
+}
+
+/* A field that is linear on a flat patch stays exactly linear at the moved vertices. */
+static void linear_field_stays_linear_on_a_flat_patch(void **state)
+{
+    (void)state;
+    const double h = 0.1;
+    sfa_mesh_data m = shape_grid(10, 10, h);
+    uint64_t seed = 3;
+    for (int32_t v = 0; v < m.nverts; ++v) {
+        double *p = m.xyz + 3 * v;
+        for (int k = 0; k < 2; ++k)
+            if (p[k] > 0 && p[k] < 10 * h - 1e-12)
+                p[k] += 0.3 * h * jitter(&seed);
+    }
+    double *field = malloc(sizeof(double) * 2 * (size_t)m.nverts);
+    for (int32_t v = 0; v < m.nverts; ++v) {
+        field[2 * v] = 2 * m.xyz[3 * v] - 3 * m.xyz[3 * v + 1] + 1;
+        field[2 * v + 1] = -m.xyz[3 * v] + 0.5;
+    }
+    sfa_surface *s = surface_of(&m);
+    int32_t id = -1;
+    assert_int_equal(sfa_add_field(s, 2, field, &id), SFA_OK);
+    assert_int_equal(sfa_smooth(s, 5), SFA_OK);
+    sfa_mesh_data out = read_back(s);
+    assert_int_equal(sfa_get_field(s, id, 2 * m.nverts, field), SFA_OK);
+    int moved = 0;
+    for (int32_t v = 0; v < m.nverts; ++v) {
+        const double x = out.xyz[3 * v], y = out.xyz[3 * v + 1];
+        moved += x != m.xyz[3 * v] || y != m.xyz[3 * v + 1];
+        assert_true(fabs(out.xyz[3 * v + 2]) <= 1e-15);
+        assert_true(fabs(field[2 * v] - (2 * x - 3 * y + 1)) < 1e-12);
+        assert_true(fabs(field[2 * v + 1] - (-x + 0.5)) < 1e-12);
+    }
+    assert_true(moved > m.nverts / 2);
+    free(field);
+    mesh_free(&out);
+    mesh_free(&m);
+    sfa_destroy(s);
+}
+
+/* The same input gives bit-identical output, in either metric mode. */
+static void smoothing_is_deterministic(void **state)
+{
+    (void)state;
+    sfa_mesh_data m = shape_noisy_icosphere(3, 1.0, 0.2, 5);
+    for (int anisotropic = 0; anisotropic <= 1; ++anisotropic) {
+        sfa_mesh_data results[2];
+        for (int run = 0; run < 2; ++run) {
+            sfa_surface *s = surface_of(&m);
+            assert_int_equal(sfa_set_param(s, SFA_PARAM_ANISOTROPIC, anisotropic), SFA_OK);
+            assert_int_equal(sfa_smooth(s, 3), SFA_OK);
+            results[run] = read_back(s);
+            sfa_destroy(s);
+        }
+        assert_memory_equal(results[0].xyz, results[1].xyz, sizeof(double) * 3 * (size_t)m.nverts);
+        mesh_free(&results[0]);
+        mesh_free(&results[1]);
+    }
+    mesh_free(&m);
+}
+
+/* Out of memory at any allocation inside sfa_smooth: the surface and its fields are as
+ * before. */
+static void nothing_lost_when_memory_runs_out(void **state)
+{
+    (void)state;
+#ifdef SFA_NO_ALLOC_HOOK
+    skip();
+#else
+    sfa_mesh_data m = shape_noisy_icosphere(2, 1.0, 0.2, 9);
+    sfa_surface *s = surface_of(&m);
+    double *field = calloc((size_t)m.nverts, sizeof(double));
+    int32_t id;
+    for (int32_t v = 0; v < m.nverts; ++v)
+        field[v] = m.xyz[3 * v];
+    assert_int_equal(sfa_add_field(s, 1, field, &id), SFA_OK);
+    int rc = SFA_ERR_MEMORY;
+    long n = 0;
+    for (; rc == SFA_ERR_MEMORY && n < 100000; ++n) {
+        snapshot before, after;
+        snapshot_take(s, &before);
+        sfa_test_fail_allocation_after(n);
+        rc = sfa_smooth(s, 2);
+        sfa_test_fail_allocation_after(-1);
+        if (rc == SFA_ERR_MEMORY) {
+            snapshot_take(s, &after);
+            assert_same_snapshot(&before, &after);
+            snapshot_free(&after);
+        }
+        snapshot_free(&before);
+    }
+    print_message("sfa_smooth succeeded once %ld allocations were allowed\n", n - 1);
+    assert_int_equal(rc, SFA_OK);
+    free(field);
+    mesh_free(&m);
+    sfa_destroy(s);
+#endif
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(jittered_sphere_gets_better_angles_and_keeps_volume_and_shape),
+        cmocka_unit_test(jittered_box_keeps_corners_edges_planes_and_volume),
+        cmocka_unit_test(linear_field_stays_linear_on_a_flat_patch),
+        cmocka_unit_test(smoothing_is_deterministic),
+        cmocka_unit_test(nothing_lost_when_memory_runs_out),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
