@@ -76,6 +76,20 @@ sfa_surface *surface_from_file(const char *path, bool drop_unreferenced)
     return s;
 }
 
+// The options after the file names of `info` and `features`: only --drop-unreferenced.
+// Prints the usage and returns false on anything else.
+bool read_drop_option(int argc, char **argv, int first, const char *command, bool &drop)
+{
+    for (int i = first; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--drop-unreferenced") != 0) {
+            std::fprintf(stderr, "surfadapt %s: unknown option '%s'\n%s", command, argv[i], usage);
+            return false;
+        }
+        drop = true;
+    }
+    return true;
+}
+
 // Reads an integer option value, or exits with a message.
 int int_option(int argc, char **argv, int &i, int lo, int hi)
 {
@@ -163,14 +177,8 @@ int info(int argc, char **argv)
         return 2;
     }
     bool drop = false;
-    for (int i = 3; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--drop-unreferenced"))
-            drop = true;
-        else {
-            std::fprintf(stderr, "surfadapt info: unknown option '%s'\n%s", argv[i], usage);
-            return 2;
-        }
-    }
+    if (!read_drop_option(argc, argv, 3, "info", drop))
+        return 2;
     sfa_surface *s = surface_from_file(argv[2], drop);
     if (!s)
         return 1;
@@ -193,14 +201,8 @@ int features(int argc, char **argv)
         return 2;
     }
     bool drop = false;
-    for (int i = 4; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--drop-unreferenced"))
-            drop = true;
-        else {
-            std::fprintf(stderr, "surfadapt features: unknown option '%s'\n%s", argv[i], usage);
-            return 2;
-        }
-    }
+    if (!read_drop_option(argc, argv, 4, "features", drop))
+        return 2;
     const char *in = argv[2], *out = argv[3];
     sfa_surface *s = surface_from_file(in, drop);
     if (!s)

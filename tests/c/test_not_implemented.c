@@ -12,14 +12,7 @@
         double f_[8] = {1, 2, 3, 4, 5, 6, 7, 8};                                                                       \
         int32_t id_;                                                                                                   \
         assert_int_equal(sfa_add_field(s, 1, f_, &id_), SFA_OK);                                                       \
-        snapshot before_, after_;                                                                                      \
-        snapshot_take(s, &before_);                                                                                    \
-        const int rc_ = (call);                                                                                        \
-        assert_error(s, rc_, (expected), __VA_ARGS__);                                                                 \
-        snapshot_take(s, &after_);                                                                                     \
-        assert_same_snapshot(&before_, &after_);                                                                       \
-        snapshot_free(&before_);                                                                                       \
-        snapshot_free(&after_);                                                                                        \
+        expect_unchanged(s, call, expected, __VA_ARGS__);                                                              \
         sfa_destroy(s);                                                                                                \
     } while (0)
 

@@ -83,6 +83,20 @@ static inline void assert_error_(const sfa_surface *s, int rc, int expected, con
         assert_error_((s), (rc), (expected), phrases_, __FILE__, __LINE__);                                            \
     } while (0)
 
+/* Runs `call` on the surface `s`, checks its status and message as assert_error does, and
+ * that the surface (mesh, parameters, fields) is bit-for-bit as before. */
+#define expect_unchanged(s, call, expected, ...)                                                                       \
+    do {                                                                                                               \
+        snapshot before_, after_;                                                                                      \
+        snapshot_take((s), &before_);                                                                                  \
+        const int rc_ = (call);                                                                                        \
+        assert_error((s), rc_, (expected), __VA_ARGS__);                                                               \
+        snapshot_take((s), &after_);                                                                                   \
+        assert_same_snapshot(&before_, &after_);                                                                       \
+        snapshot_free(&before_);                                                                                       \
+        snapshot_free(&after_);                                                                                        \
+    } while (0)
+
 /* SFA_OK, and the message is then "". */
 #define assert_ok(s, rc)                                                                                               \
     do {                                                                                                               \
