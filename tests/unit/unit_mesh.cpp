@@ -1,7 +1,10 @@
-// Unit tests of the mesh core: adjacency, one-ring walks and the invariant checker.
+// Unit tests of the mesh core: adjacency, one-ring walks, the invariant checker and the
+// edge flip.
+#include "mesh/edge_flip.hpp"
 #include "mesh/invariants.hpp"
 #include "mesh/validate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstddef>
@@ -125,6 +128,66 @@ void build_adjacency_matches_validation(void **)
     assert_true(rebuilt.v2h == validated.v2h);
 }
 
+// Triangles as sorted rotations, so that two meshes with the same faces compare equal.
+std::vector<Triangle> canonical_triangles(const TriMesh &mesh)
+{
+    std::vector<Triangle> faces;
+    for (Triangle t : mesh.tri) {
+        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+        faces.push_back(t);
+    }
+    std::sort(faces.begin(), faces.end());
+    return faces;
+}
+
+void flips_keep_every_invariant_and_undo_themselves(void **)
+{
+    for (TriMesh mesh : {cube(), grid()}) {
+        const int32_t halfedges = 3 * mesh.num_triangles();
+        // Several rounds of flips in a scrambled order reach many configurations.
+        for (int round = 0; round < 5; ++round)
+            for (int32_t k = 0; k < halfedges; ++k) {
+                const int32_t h = (7 * k + round) % halfedges;
+                if (!flip_keeps_manifold(mesh, h))
+                    continue;
+                const std::vector<Triangle> before = canonical_triangles(mesh);
+                const FlipQuad quad = flip_quad(mesh, h);
+                std::vector<std::array<int32_t, 2>> ends(halfedges);
+                for (int32_t e = 0; e < halfedges; ++e)
+                    ends[e] = {mesh.tail(e), mesh.head(e)};
+
+                const FlipMoves moves = flip_edge(mesh, h);
+                assert_string_equal(invariant_violation(mesh).c_str(), "");
+                assert_int_equal(mesh.tail(h), quad.q);
+                assert_int_equal(mesh.head(h), quad.p);
+                for (int i = 0; i < 4; ++i) {
+                    assert_int_equal(mesh.tail(moves.to[i]), ends[moves.from[i]][0]);
+                    assert_int_equal(mesh.head(moves.to[i]), ends[moves.from[i]][1]);
+                }
+                // Flipping the new edge back restores the same triangles.
+                assert_true(flip_keeps_manifold(mesh, h));
+                flip_edge(mesh, h);
+                assert_string_equal(invariant_violation(mesh).c_str(), "");
+                assert_true(canonical_triangles(mesh) == before);
+                flip_edge(mesh, h);
+            }
+    }
+}
+
+void flips_never_make_a_duplicate_edge_or_cross_a_boundary(void **)
+{
+    // A tetrahedron: flipping any edge would join two vertices that are already joined.
+    const double xyz[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const int32_t tris[] = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2};
+    const TriMesh tetrahedron = validated_mesh(MeshInput{4, xyz, 4, tris, 0, false});
+    for (int32_t h = 0; h < 12; ++h)
+        assert_false(flip_keeps_manifold(tetrahedron, h));
+    const TriMesh patch = grid();
+    for (int32_t h = 0; h < 3 * patch.num_triangles(); ++h)
+        if (patch.opp[h] < 0)
+            assert_false(flip_keeps_manifold(patch, h));
+}
+
 } // namespace
 
 int main()
@@ -137,6 +200,8 @@ int main()
         cmocka_unit_test(checker_names_a_bad_vertex_halfedge),
         cmocka_unit_test(checker_names_a_non_finite_position),
         cmocka_unit_test(build_adjacency_matches_validation),
+        cmocka_unit_test(flips_keep_every_invariant_and_undo_themselves),
+        cmocka_unit_test(flips_never_make_a_duplicate_edge_or_cross_a_boundary),
     };
     return cmocka_run_group_tests_name("unit_mesh", tests, nullptr, nullptr);
 }
