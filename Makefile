@@ -123,9 +123,9 @@ $(ALLOC_HOOK_OBJ): tests/c/alloc_hook/alloc_hook.cpp | deps
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -Itests/c -c $< -o $@
 
-$(UNIT_TESTS): build/tests/%: tests/unit/%.cpp $(LIB_A)
+$(UNIT_TESTS): build/tests/%: tests/unit/%.cpp $(LIB_A) $(TEST_SUPPORT_OBJ)
 	@mkdir -p $(@D)
-	$(CXX) $(CXXFLAGS) -o $@ $< $(LIB_A) -lcmocka -lm
+	$(CXX) $(CXXFLAGS) -Itests/c -Iapps/surfadapt -o $@ $< $(TEST_SUPPORT_OBJ) $(LIB_A) -lcmocka -lm
 
 # The same C tests against the library's objects built with ASan + UBSan (static link).
 build/san/%.o: %.cpp | deps

@@ -119,7 +119,16 @@ enum sfa_param {
     /** Feature detection safeguard: a vertex where a ridge curve turns by more than this
         angle (degrees, in (0, 180); default 40) is a corner, so that ridge vertices lie on
         curves that are locally straight or gently bent. */
-    SFA_PARAM_RIDGE_TURN_ANGLE = 15
+    SFA_PARAM_RIDGE_TURN_ANGLE = 15,
+    /** Anisotropic edge flipping (§3.3) changes the surface only where it is nearly flat:
+        an edge is flipped only if the angle between the normals of its two triangles, and
+        of the two triangles after the flip, is at most this (degrees, in (0, 180);
+        default 20). Ridge and boundary edges are never flipped. */
+    SFA_PARAM_FLIP_DIHEDRAL_ANGLE = 16,
+    /** Threads of the per-vertex and per-edge loops (OpenMP): 0 (default) uses OpenMP's
+        default (OMP_NUM_THREADS, else every core); n >= 1 uses at most n, so that an MPI
+        host can keep one thread per rank. A whole number. Results never depend on it. */
+    SFA_PARAM_THREADS = 17
 };
 
 /** Quantities for sfa_measure(). */

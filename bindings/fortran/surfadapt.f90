@@ -53,6 +53,8 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_PARAM_FOLD_SAFETY = 13
   integer(c_int), parameter, public :: SFA_PARAM_DROP_UNREFERENCED = 14
   integer(c_int), parameter, public :: SFA_PARAM_RIDGE_TURN_ANGLE = 15
+  integer(c_int), parameter, public :: SFA_PARAM_FLIP_DIHEDRAL_ANGLE = 16
+  integer(c_int), parameter, public :: SFA_PARAM_THREADS = 17
 
   ! --------------------------------------------------- enum sfa_measure_quantity
   integer(c_int), parameter, public :: SFA_MEASURE_VOLUME = 0

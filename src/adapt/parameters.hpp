@@ -23,6 +23,8 @@ enum class Param : int {
     fold_safety,
     drop_unreferenced,
     ridge_turn_angle,
+    flip_dihedral_angle,
+    threads,
     count
 };
 

@@ -8,6 +8,7 @@
 namespace sfa {
 
 struct SurfaceAnalysis {
+    std::vector<Mat3> quadric; // A_v of §2.2
     std::vector<QuadricEigen> eigen;
     Features features;
     std::vector<VertexMetric> metric;

@@ -16,15 +16,17 @@ std::vector<Vec3> face_area_vectors(const TriMesh &mesh)
     return area;
 }
 
+Mat3 face_quadric(const Vec3 &area_vector)
+{
+    const double area = area_vector.norm();
+    return area == 0 ? Mat3::Zero() : Mat3(area_vector * area_vector.transpose() / area);
+}
+
 std::vector<Mat3> vertex_quadrics(const TriMesh &mesh, const std::vector<Vec3> &area_vectors)
 {
     std::vector<Mat3> quadric(mesh.pos.size(), Mat3::Zero());
     for (size_t t = 0; t < mesh.tri.size(); ++t) {
-        const Vec3 &a = area_vectors[t];
-        const double area = a.norm();
-        if (area == 0)
-            continue; // a flat triangle has no normal and no weight
-        const Mat3 contribution = a * a.transpose() / area;
+        const Mat3 contribution = face_quadric(area_vectors[t]);
         for (int32_t v : mesh.tri[t])
             quadric[v] += contribution;
     }

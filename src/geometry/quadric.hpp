@@ -22,6 +22,10 @@ struct QuadricEigen {
 // Per face: unit normal times area (half the cross product of two edges).
 std::vector<Vec3> face_area_vectors(const TriMesh &mesh);
 
+// One face's term of the quadric: area n n^T = a a^T / |a| for its area vector a; zero for
+// a flat face, which has no normal and no weight.
+Mat3 face_quadric(const Vec3 &area_vector);
+
 // A_v = sum over the faces t around v of area_t n_t n_t^T = sum a_t a_t^T / |a_t|,
 // with a_t the face's area vector.
 std::vector<Mat3> vertex_quadrics(const TriMesh &mesh, const std::vector<Vec3> &area_vectors);

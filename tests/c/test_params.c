@@ -23,6 +23,8 @@ static double expected_default(int key)
     case SFA_PARAM_FOLD_SAFETY: return 0.5;
     case SFA_PARAM_DROP_UNREFERENCED: return 0;
     case SFA_PARAM_RIDGE_TURN_ANGLE: return 40;
+    case SFA_PARAM_FLIP_DIHEDRAL_ANGLE: return 20;
+    case SFA_PARAM_THREADS: return 0;
     default: return NAN;
     }
 }
@@ -47,6 +49,8 @@ static double valid_value(int key)
     case SFA_PARAM_FOLD_SAFETY: return 1;
     case SFA_PARAM_DROP_UNREFERENCED: return 1;
     case SFA_PARAM_RIDGE_TURN_ANGLE: return 60;
+    case SFA_PARAM_FLIP_DIHEDRAL_ANGLE: return 10;
+    case SFA_PARAM_THREADS: return 1;
     default: return NAN;
     }
 }
@@ -61,7 +65,8 @@ static int invalid_values(int key, double out[4])
     case SFA_PARAM_CORNER_ANGLE:
     case SFA_PARAM_METRIC_MIN_ANGLE:
     case SFA_PARAM_METRIC_MAX_ANGLE:
-    case SFA_PARAM_RIDGE_TURN_ANGLE: out[0] = 0; out[1] = 180; out[2] = -10; out[3] = 200; return 4;
+    case SFA_PARAM_RIDGE_TURN_ANGLE:
+    case SFA_PARAM_FLIP_DIHEDRAL_ANGLE: out[0] = 0; out[1] = 180; out[2] = -10; out[3] = 200; return 4;
     case SFA_PARAM_SPLIT_LENGTH_RATIO:
     case SFA_PARAM_SPLIT_SHORTEST_RATIO:
     case SFA_PARAM_CONTRACT_LENGTH_RATIO: out[0] = 0; out[1] = -0.5; return 2;
@@ -71,6 +76,7 @@ static int invalid_values(int key, double out[4])
     case SFA_PARAM_LARGE_ANGLE: out[0] = 59.5; out[1] = 180; out[2] = 200; return 3;
     case SFA_PARAM_FOLD_SAFETY: out[0] = 0; out[1] = 1.0000001; out[2] = -0.5; return 3;
     case SFA_PARAM_DROP_UNREFERENCED: out[0] = 0.5; out[1] = 2; out[2] = -1; return 3;
+    case SFA_PARAM_THREADS: out[0] = -1; out[1] = 1.5; out[2] = 5000; return 3;
     default: return 0;
     }
 }

@@ -1,0 +1,229 @@
+// Unit tests of anisotropic edge flipping (§3.3): Delaunay meshes of a plane stay as they
+// are, a badly triangulated plane patch becomes its Delaunay triangulation, ridge edges are
+// never flipped, and every flip keeps the mesh invariants.
+#include "adapt/flip.hpp"
+#include "geometry/measures.hpp"
+#include "mesh/edge_flip.hpp"
+#include "mesh/invariants.hpp"
+#include "mesh/validate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
+#include <cstddef>
+#include <cstdio>
+#include <setjmp.h>
+#include <vector>
+
+extern "C" {
+#include <cmocka.h>
+
+#include "support/shapes.h"
+}
+
+using namespace sfa;
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+const FeatureThresholds default_thresholds{45 * pi / 180, 20 * pi / 180, 40 * pi / 180};
+const MetricBounds default_bounds{8 * pi / 180, 30 * pi / 180, true};
+const FlipSettings default_flips{default_bounds, 20 * pi / 180};
+
+TriMesh mesh_of(const std::vector<double> &xyz, const std::vector<int32_t> &tris)
+{
+    return validated_mesh(MeshInput{static_cast<int32_t>(xyz.size() / 3), xyz.data(),
+                                    static_cast<int32_t>(tris.size() / 3), tris.data(), 0, false});
+}
+
+TriMesh mesh_of(const sfa_mesh_data &m) { return validated_mesh(MeshInput{m.nverts, m.xyz, m.ntris, m.tris, 0, false}); }
+
+bool joined(const TriMesh &mesh, int32_t a, int32_t b)
+{
+    bool found = false;
+    mesh.for_each_neighbour(a, [&](int32_t w, int32_t) { found = found || w == b; });
+    return found;
+}
+
+bool every_triangle_faces_up(const TriMesh &mesh)
+{
+    for (const Triangle &t : mesh.tri)
+        if ((mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]).z() <= 0)
+            return false;
+    return true;
+}
+
+// Passes of analysis + flipping until nothing flips (at most max_passes); the number of
+// passes that flipped something.
+int flip_until_stable(TriMesh &mesh, int max_passes, int32_t *total_flips = nullptr)
+{
+    int passes = 0;
+    for (; passes < max_passes; ++passes) {
+        const int32_t flips = flipping_pass(mesh, analyze_surface(mesh, default_thresholds, default_bounds), default_flips);
+        assert_string_equal(invariant_violation(mesh).c_str(), "");
+        if (total_flips)
+            *total_flips += flips;
+        if (flips == 0)
+            break;
+    }
+    return passes;
+}
+
+// Points of the plane z = 0 on an n x n grid of spacing 1: the boundary exactly on the
+// square (a convex outline), the inside jittered by up to `jitter` in x and y (at most 1/4,
+// so that every cell stays convex and either split is a valid triangulation).
+std::vector<double> jittered_grid_points(int n, double jitter, uint64_t seed)
+{
+    shapes_rng rng = rng_seed(seed);
+    std::vector<double> xyz;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+            const bool inside = i > 0 && j > 0 && i < n && j < n;
+            const double dx = inside ? jitter * (2 * rng_uniform(&rng) - 1) : 0;
+            const double dy = inside ? jitter * (2 * rng_uniform(&rng) - 1) : 0;
+            xyz.insert(xyz.end(), {i + dx, j + dy, 0.0});
+        }
+    return xyz;
+}
+
+// Each cell split along its longer diagonal (`worse`) or its shorter one.
+std::vector<int32_t> grid_cells(const std::vector<double> &xyz, int n, bool worse)
+{
+    const auto dist2 = [&](int32_t u, int32_t v) {
+        const double dx = xyz[3 * u] - xyz[3 * v], dy = xyz[3 * u + 1] - xyz[3 * v + 1];
+        return dx * dx + dy * dy;
+    };
+    std::vector<int32_t> tris;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const int32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+            if ((dist2(a, c) > dist2(b, d)) == worse)
+                tris.insert(tris.end(), {a, b, c, a, c, d});
+            else
+                tris.insert(tris.end(), {a, b, d, b, c, d});
+        }
+    return tris;
+}
+
+// Random flips wherever the quad is convex (the new triangles face up too): a valid but
+// badly shaped triangulation, far from Delaunay in many places at once.
+void scramble(TriMesh &mesh, int flips, uint64_t seed)
+{
+    shapes_rng rng = rng_seed(seed);
+    const auto faces_up = [&](int32_t x, int32_t y, int32_t z) {
+        return (mesh.pos[y] - mesh.pos[x]).cross(mesh.pos[z] - mesh.pos[x]).z() > 0;
+    };
+    for (int done = 0; done < flips;) {
+        const int32_t h = static_cast<int32_t>(rng_next(&rng) % (3 * mesh.tri.size()));
+        if (!flip_keeps_manifold(mesh, h))
+            continue;
+        const FlipQuad quad = flip_quad(mesh, h);
+        if (faces_up(quad.q, quad.p, quad.a) && faces_up(quad.p, quad.q, quad.b)) {
+            flip_edge(mesh, h);
+            ++done;
+        }
+    }
+}
+
+// The number of triangles whose circumcircle contains another vertex of the mesh more than
+// 1/200 of its radius inside: zero for a Delaunay triangulation (flipping leaves quads
+// whose opposite angles exceed pi by less than 1e-3, as if cocircular).
+int non_delaunay_triangles(const TriMesh &mesh)
+{
+    int bad = 0;
+    for (const Triangle &t : mesh.tri) {
+        const Eigen::Vector2d a = mesh.pos[t[0]].head<2>(), b = mesh.pos[t[1]].head<2>(), c = mesh.pos[t[2]].head<2>();
+        // Circumcentre from the perpendicular bisectors.
+        const Eigen::Vector2d ab = b - a, ac = c - a;
+        const double d = 2 * (ab.x() * ac.y() - ab.y() * ac.x());
+        const Eigen::Vector2d centre =
+            a + Eigen::Vector2d(ac.y() * ab.squaredNorm() - ab.y() * ac.squaredNorm(),
+                                ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm()) / d;
+        const double radius2 = (a - centre).squaredNorm();
+        for (int32_t v = 0; v < mesh.num_vertices(); ++v)
+            if (v != t[0] && v != t[1] && v != t[2] && (mesh.pos[v].head<2>() - centre).squaredNorm() < radius2 * (1 - 1e-2)) {
+                ++bad;
+                break;
+            }
+    }
+    return bad;
+}
+
+void delaunay_meshes_of_a_plane_stay_unchanged(void **)
+{
+    // A jittered grid split along the shorter diagonals is not always Delaunay; flipped
+    // until stable it is, and then one more pass must not flip anything. The regular grid
+    // (every quad cocircular) must not flip either way.
+    for (uint64_t seed = 1; seed <= 3; ++seed) {
+        const std::vector<double> xyz = jittered_grid_points(16, 0.25, seed);
+        TriMesh mesh = mesh_of(xyz, grid_cells(xyz, 16, false));
+        flip_until_stable(mesh, 50);
+        assert_int_equal(non_delaunay_triangles(mesh), 0);
+        const std::vector<Triangle> before = mesh.tri;
+        assert_int_equal(flipping_pass(mesh, analyze_surface(mesh, default_thresholds, default_bounds), default_flips), 0);
+        assert_true(mesh.tri == before);
+    }
+    const std::vector<double> regular = jittered_grid_points(8, 0, 1);
+    TriMesh grid = mesh_of(regular, grid_cells(regular, 8, false));
+    assert_int_equal(flip_until_stable(grid, 5), 0);
+}
+
+void a_bad_plane_patch_becomes_its_delaunay_triangulation(void **)
+{
+    for (uint64_t seed = 1; seed <= 3; ++seed) {
+        const std::vector<double> xyz = jittered_grid_points(20, 0.25, seed);
+        TriMesh mesh = mesh_of(xyz, grid_cells(xyz, 20, true));
+        scramble(mesh, 2000, seed);
+        assert_true(every_triangle_faces_up(mesh));
+        const int bad_before = non_delaunay_triangles(mesh);
+        int32_t flips = 0;
+        const int passes = flip_until_stable(mesh, 50, &flips);
+        std::printf("seed %d: %d of %d triangles not Delaunay; %d flips in %d passes; after: %d\n", int(seed),
+                    bad_before, mesh.num_triangles(), flips, passes, non_delaunay_triangles(mesh));
+        assert_true(bad_before > mesh.num_triangles() / 4);
+        assert_int_equal(non_delaunay_triangles(mesh), 0);
+        assert_true(every_triangle_faces_up(mesh));
+    }
+}
+
+void ridge_edges_of_fandisk_are_never_flipped(void **)
+{
+    char path[1024];
+    if (!data_file("fandisk.obj", path, sizeof path)) {
+        std::printf("%s not found (set SFA_DATA_DIR): skipped\n", path);
+        skip();
+    }
+    sfa_mesh_data data{};
+    char error[256];
+    assert_int_equal(mesh_read(path, &data, error, sizeof error), 0);
+    TriMesh mesh = mesh_of(data);
+    mesh_free(&data);
+
+    const double volume = enclosed_volume(mesh);
+    const std::vector<std::array<int32_t, 2>> ridges =
+        analyze_surface(mesh, default_thresholds, default_bounds).features.ridge_edges;
+    assert_true(ridges.size() > 600);
+    int32_t flips = 0;
+    const int passes = flip_until_stable(mesh, 20, &flips);
+    for (const auto &edge : ridges)
+        assert_true(joined(mesh, edge[0], edge[1]));
+    const double volume_change = enclosed_volume(mesh) / volume - 1;
+    std::printf("fandisk: %d flips in %d passes, %zu ridge edges kept, volume change %.2e\n", flips, passes,
+                ridges.size(), volume_change);
+    assert_true(flips > 0);
+    assert_true(passes < 20); // it settles: no edges flipping back and forth
+    assert_true(std::abs(volume_change) < 1e-3);
+}
+
+} // namespace
+
+int main()
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(delaunay_meshes_of_a_plane_stay_unchanged),
+        cmocka_unit_test(a_bad_plane_patch_becomes_its_delaunay_triangulation),
+        cmocka_unit_test(ridge_edges_of_fandisk_are_never_flipped),
+    };
+    return cmocka_run_group_tests_name("unit_flip", tests, nullptr, nullptr);
+}
