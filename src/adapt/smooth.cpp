@@ -38,18 +38,21 @@ Vec3 tangent_target(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_
     return frame * (root.operatorInverseSqrt() * (sum_image / count));
 }
 
-// Ridge (or boundary) vertex: only along the line through its two ridge neighbours, so
-// that straight ridges stay exactly straight; the same equal-metric-length balance as
-// tangent_target, in one dimension: the midpoints weighted by the square root of the edge
-// metric along the line.
-Vec3 ridge_target(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t v, Vec3 &direction)
+// Ridge (or boundary) vertex: moves only along its ridge, with the same equal-metric-length
+// balance as tangent_target in one dimension: the signed distance s along the chord of its
+// two ridge neighbours (the midpoints weighted by the square root of the edge metric along
+// the chord), taken along the circle through the vertex and those two neighbours. A straight
+// ridge stays exactly straight, and a vertex of a circular ridge (a cylinder's rim) stays on
+// its circle; moving along the chord instead would cut inside a curved ridge.
+Vec3 ridge_motion(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t v)
 {
     int32_t ends[2] = {-1, -1}, found = 0;
     mesh.for_each_neighbour(v, [&](int32_t w, int32_t h) {
         if (analysis.features.ridge_halfedge[h] && found < 2)
             ends[found++] = w;
     });
-    direction = (mesh.pos[ends[1]] - mesh.pos[ends[0]]).normalized();
+    const Vec3 &p = mesh.pos[v];
+    const Vec3 direction = (mesh.pos[ends[1]] - mesh.pos[ends[0]]).normalized();
     const VertexMetric &mp = analysis.metric[v];
     const Frame frame = mp.frame();
     double sum_weight = 0, sum_moment = 0;
@@ -60,9 +63,24 @@ Vec3 ridge_target(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t 
         // to the physical length.
         const double weight = std::sqrt(std::max(d.dot(half * d), 1e-12));
         sum_weight += weight;
-        sum_moment += weight * direction.dot(0.5 * (mesh.pos[w] - mesh.pos[v]));
+        sum_moment += weight * direction.dot(0.5 * (mesh.pos[w] - p));
     }
-    return sum_moment / sum_weight * direction;
+    const double distance = sum_moment / sum_weight;
+
+    // The circle through p and the two ends: centre p + c with c = (|u|^2 w x n + |w|^2 n x u)
+    // / (2 |n|^2), n = u x w, for u, w the ends relative to p.
+    const Vec3 u = mesh.pos[ends[0]] - p, w = mesh.pos[ends[1]] - p, n = u.cross(w);
+    const double scale2 = u.squaredNorm() * w.squaredNorm();
+    if (n.squaredNorm() <= 1e-24 * scale2) // straight (to round-off): the chord is the ridge
+        return distance * direction;
+    const Vec3 centre = (u.squaredNorm() * w.cross(n) + w.squaredNorm() * n.cross(u)) / (2 * n.squaredNorm());
+    const Vec3 radial = -centre; // from the centre to p
+    const double radius = radial.norm();
+    Vec3 tangent = n.normalized().cross(radial / radius);
+    if (tangent.dot(direction) < 0)
+        tangent = -tangent;
+    const double angle = distance / radius;
+    return centre + std::cos(angle) * radial + std::sin(angle) * radius * tangent;
 }
 
 // The gradient of the enclosed volume with respect to one vertex: moving v alone by d
@@ -99,14 +117,12 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
         const int rank = analysis.features.rank[v];
         if (rank == 2)
             continue; // corners never move
-        const Vec3 gradient = volume_gradient(mesh, v);
         if (rank == 0) {
-            motion[v] = volume_corrected(tangent_target(mesh, analysis, v), gradient, analysis.metric[v].normal);
+            motion[v] = volume_corrected(tangent_target(mesh, analysis, v), volume_gradient(mesh, v), analysis.metric[v].normal);
         } else {
-            Vec3 direction;
-            const Vec3 along = ridge_target(mesh, analysis, v, direction);
-            // The part of the volume gradient across the ridge line is in the primary space.
-            motion[v] = volume_corrected(along, gradient, gradient - gradient.dot(direction) * direction);
+            // No volume correction: it would move the vertex off its ridge. Along a straight
+            // ridge the motion changes no volume; along a curved one, a second-order amount.
+            motion[v] = ridge_motion(mesh, analysis, v);
         }
     }
 

@@ -155,7 +155,7 @@ static void unknown_keys_rejected(void **state)
     sfa_surface *s = make_cube_surface();
     snapshot before, after;
     snapshot_take(s, &before);
-    const int keys[] = {-1, 16, 17, 1000, INT32_MIN, INT32_MAX};
+    const int keys[] = {-1, SHAPES_NPARAMS, SHAPES_NPARAMS + 1, 1000, INT32_MIN, INT32_MAX};
     for (size_t i = 0; i < sizeof keys / sizeof keys[0]; ++i) {
         double v = 12345;
         assert_error(s, sfa_set_param(s, keys[i], 1.0), SFA_ERR_ARGUMENT, "");

@@ -1,11 +1,15 @@
 // Unit tests of anisotropic edge flipping (§3.3): Delaunay meshes of a plane stay as they
 // are, a badly triangulated plane patch becomes its Delaunay triangulation, ridge edges are
-// never flipped, and every flip keeps the mesh invariants.
+// never flipped, every flip keeps the mesh invariants, and together with smoothing (§3.2)
+// flipping stretches a cylinder's triangles along its axis.
 #include "adapt/flip.hpp"
+#include "adapt/smooth.hpp"
 #include "geometry/measures.hpp"
 #include "mesh/edge_flip.hpp"
 #include "mesh/invariants.hpp"
 #include "mesh/validate.hpp"
+
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -216,6 +220,131 @@ void ridge_edges_of_fandisk_are_never_flipped(void **)
     assert_true(std::abs(volume_change) < 1e-3);
 }
 
+// A closed cylinder of radius 1 about the z axis whose side is made of equilateral
+// triangles: rings of `segments` vertices, every other ring turned by half a segment, ring
+// spacing sqrt(3)/2 of a segment; `rings` (even) rows of triangles; each cap a fan around a
+// centre vertex (the last two vertices). Vertex j * segments + i is on ring j.
+TriMesh staggered_cylinder(int segments, int rings)
+{
+    const double step = 2 * pi / segments, spacing = step * std::sqrt(3.0) / 2;
+    std::vector<double> xyz;
+    for (int j = 0; j <= rings; ++j)
+        for (int i = 0; i < segments; ++i) {
+            const double angle = step * (i + 0.5 * (j % 2));
+            xyz.insert(xyz.end(), {std::cos(angle), std::sin(angle), spacing * (j - rings / 2.0)});
+        }
+    xyz.insert(xyz.end(), {0, 0, -spacing * rings / 2, 0, 0, spacing * rings / 2});
+    const int32_t bottom = (rings + 1) * segments, top = bottom + 1;
+    const auto at = [&](int j, int i) { return j * segments + (i % segments); };
+    std::vector<int32_t> tris;
+    for (int j = 0; j < rings; ++j)
+        for (int i = 0; i < segments; ++i)
+            if (j % 2 == 0)
+                tris.insert(tris.end(), {at(j, i), at(j, i + 1), at(j + 1, i), at(j, i + 1), at(j + 1, i + 1), at(j + 1, i)});
+            else
+                tris.insert(tris.end(), {at(j, i), at(j + 1, i + 1), at(j + 1, i), at(j, i), at(j, i + 1), at(j + 1, i + 1)});
+    for (int i = 0; i < segments; ++i)
+        tris.insert(tris.end(), {bottom, at(0, i + 1), at(0, i), top, at(rings, i), at(rings, i + 1)});
+    return mesh_of(xyz, tris);
+}
+
+// Circumradius / (2 inradius): 1 for an equilateral triangle.
+double aspect_ratio(const Eigen::Vector2d &a, const Eigen::Vector2d &b, const Eigen::Vector2d &c)
+{
+    const double x = (b - c).norm(), y = (c - a).norm(), z = (a - b).norm();
+    return x * y * z / ((y + z - x) * (z + x - y) * (x + y - z));
+}
+
+struct SideShape { // of the side's triangles that do not touch a rim
+    double elongation;    // mean of axial extent / extent around the axis
+    double metric_aspect; // mean aspect ratio in the metric space of the triangle's corners
+};
+
+SideShape side_shape(const TriMesh &mesh, const SurfaceAnalysis &analysis)
+{
+    double elongation = 0, metric_aspect = 0;
+    int count = 0;
+    for (const Triangle &t : mesh.tri) {
+        // The side away from the rims: no corner on a ridge (the caps' triangles all have
+        // a rim vertex or the cap centre, whose frame is the cap's).
+        const Vec3 normal = (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]).normalized();
+        if (std::abs(normal.z()) > 0.5 || analysis.features.rank[t[0]] || analysis.features.rank[t[1]] ||
+            analysis.features.rank[t[2]])
+            continue;
+        double z_lo = INFINITY, z_hi = -INFINITY, angle_lo = INFINITY, angle_hi = -INFINITY;
+        const double angle0 = std::atan2(mesh.pos[t[0]].y(), mesh.pos[t[0]].x());
+        for (int32_t v : t) {
+            const double angle = std::remainder(std::atan2(mesh.pos[v].y(), mesh.pos[v].x()) - angle0, 2 * pi);
+            z_lo = std::min(z_lo, mesh.pos[v].z());
+            z_hi = std::max(z_hi, mesh.pos[v].z());
+            angle_lo = std::min(angle_lo, angle);
+            angle_hi = std::max(angle_hi, angle);
+        }
+        elongation += (z_hi - z_lo) / (angle_hi - angle_lo);
+        // The corners' mean metric, in corner 0's tangent frame.
+        const VertexMetric &m0 = analysis.metric[t[0]];
+        const Eigen::Matrix2d mean =
+            (m0.tensor() + tensor_in_frame(analysis.metric[t[1]], m0) + tensor_in_frame(analysis.metric[t[2]], m0)) / 3;
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> root;
+        root.computeDirect(mean);
+        const auto image = [&](int32_t v) -> Eigen::Vector2d {
+            return root.operatorSqrt() * (m0.frame().transpose() * (mesh.pos[v] - mesh.pos[t[0]]));
+        };
+        metric_aspect += aspect_ratio(image(t[0]), image(t[1]), image(t[2]));
+        ++count;
+    }
+    return {elongation / count, metric_aspect / count};
+}
+
+struct CylinderRun {
+    SideShape before, after;
+    int32_t flips;
+    TriMesh mesh;
+};
+
+// Ten rounds of one smoothing sweep and one flipping pass, each after a fresh analysis.
+CylinderRun smooth_and_flip_cylinder(int segments, int rings, bool anisotropic)
+{
+    const MetricBounds bounds{8 * pi / 180, 30 * pi / 180, anisotropic};
+    CylinderRun run{{}, {}, 0, staggered_cylinder(segments, rings)};
+    run.before = side_shape(run.mesh, analyze_surface(run.mesh, default_thresholds, default_bounds));
+    for (int round = 0; round < 10; ++round) {
+        run.mesh.pos = smoothing_sweep(run.mesh, analyze_surface(run.mesh, default_thresholds, bounds));
+        run.flips += flipping_pass(run.mesh, analyze_surface(run.mesh, default_thresholds, bounds),
+                                   FlipSettings{bounds, default_flips.max_dihedral});
+        assert_string_equal(invariant_violation(run.mesh).c_str(), "");
+    }
+    // Measured in the anisotropic metric in both modes, to compare them.
+    run.after = side_shape(run.mesh, analyze_surface(run.mesh, default_thresholds, default_bounds));
+    return run;
+}
+
+void smoothing_and_flipping_stretch_a_cylinder_along_its_axis(void **)
+{
+    const int segments = 24, rings = 16;
+    const CylinderRun anisotropic = smooth_and_flip_cylinder(segments, rings, true);
+    const CylinderRun isotropic = smooth_and_flip_cylinder(segments, rings, false);
+    for (const CylinderRun *run : {&anisotropic, &isotropic})
+        std::printf("cylinder side, %s: axial/around extent %.3f -> %.3f, aspect ratio in the metric %.3f -> %.3f, "
+                    "%d flips\n",
+                    run == &anisotropic ? "anisotropic" : "isotropic", run->before.elongation, run->after.elongation,
+                    run->before.metric_aspect, run->after.metric_aspect, run->flips);
+    // Equilateral triangles to start with (axial extent sqrt(3)/2 of the extent around).
+    assert_true(anisotropic.before.elongation < 0.9);
+    assert_true(anisotropic.after.elongation > 1.5);
+    assert_true(isotropic.after.elongation < 1.1);
+    // The rims (ridges) stay exactly where they were: their vertices do not move off the
+    // rim circles, and no rim edge is flipped.
+    const TriMesh start = staggered_cylinder(segments, rings);
+    for (const CylinderRun *run : {&anisotropic, &isotropic})
+        for (int i = 0; i < segments; ++i)
+            for (int32_t v : {i, rings * segments + i}) {
+                assert_true(std::abs(run->mesh.pos[v].head<2>().norm() - 1) <= 1e-12);
+                assert_true(run->mesh.pos[v].z() == start.pos[v].z());
+                assert_true(joined(run->mesh, v, v % segments == segments - 1 ? v + 1 - segments : v + 1));
+            }
+}
+
 } // namespace
 
 int main()
@@ -224,6 +353,7 @@ int main()
         cmocka_unit_test(delaunay_meshes_of_a_plane_stay_unchanged),
         cmocka_unit_test(a_bad_plane_patch_becomes_its_delaunay_triangulation),
         cmocka_unit_test(ridge_edges_of_fandisk_are_never_flipped),
+        cmocka_unit_test(smoothing_and_flipping_stretch_a_cylinder_along_its_axis),
     };
     return cmocka_run_group_tests_name("unit_flip", tests, nullptr, nullptr);
 }
