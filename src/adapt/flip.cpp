@@ -1,6 +1,7 @@
 #include "adapt/flip.hpp"
 
 #include "mesh/edge_flip.hpp"
+#include "mesh/parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -115,14 +116,16 @@ int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const Flip
     const int32_t halfedges = 3 * mesh.num_triangles();
     const auto may_flip = [&](int32_t h) { return !locked[h] && flip_keeps_manifold(mesh, h); };
 
+    // Judging is independent per edge (in parallel); collecting is in half-edge order.
+    std::vector<Verdict> verdict(halfedges, Verdict{false, 0});
+#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 1024)
+    for (int32_t h = 0; h < halfedges; ++h)
+        if (mesh.opp[h] > h && may_flip(h)) // each interior edge once, from its lower half
+            verdict[h] = judge(mesh, h, quadric, settings, cos_max_dihedral);
     std::vector<Candidate> candidates;
-    for (int32_t h = 0; h < halfedges; ++h) {
-        if (mesh.opp[h] < h || !may_flip(h)) // each interior edge once, from its lower half
-            continue;
-        const Verdict verdict = judge(mesh, h, quadric, settings, cos_max_dihedral);
-        if (verdict.flip)
-            candidates.push_back({verdict.max_opposite_angle, mesh.tail(h), mesh.head(h)});
-    }
+    for (int32_t h = 0; h < halfedges; ++h)
+        if (verdict[h].flip)
+            candidates.push_back({verdict[h].max_opposite_angle, mesh.tail(h), mesh.head(h)});
     // Greedy, largest opposite angle first; ties in vertex order, so the result is the same
     // however the candidates were found.
     std::sort(candidates.begin(), candidates.end(), [](const Candidate &x, const Candidate &y) {

@@ -1,5 +1,6 @@
 #include "adapt/smooth.hpp"
 
+#include "mesh/parallel.hpp"
 #include "motion/fold_time.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -113,6 +114,7 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
 {
     const int32_t n = mesh.num_vertices();
     std::vector<Vec3> motion(n, Vec3::Zero());
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < n; ++v) {
         const int rank = analysis.features.rank[v];
         if (rank == 2)
@@ -131,6 +133,7 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
     // at least one more vertex, so this ends.
     std::vector<Vec3> moved(n);
     for (;;) {
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
         for (int32_t v = 0; v < n; ++v)
             moved[v] = mesh.pos[v] + motion[v];
         const int32_t folded = first_folded_triangle(mesh, moved);

@@ -4,6 +4,7 @@
 
 #include "api/surface.hpp"
 #include "mesh/error.hpp"
+#include "mesh/parallel.hpp"
 
 #include "surfadapt.h"
 
@@ -27,6 +28,7 @@ int call(const sfa_surface *s, const char *function, Body &&body) noexcept
 {
     if (!s)
         return SFA_ERR_ARGUMENT;
+    const ThreadLimit threads(static_cast<int>(s->params.get(Param::threads)));
     try {
         body();
         s->last_error[0] = '\0';

@@ -1,5 +1,7 @@
 #include "fields/transfer.hpp"
 
+#include "mesh/parallel.hpp"
+
 #include <algorithm>
 #include <limits>
 
@@ -24,6 +26,7 @@ std::vector<VertexField> fields_at_moved_vertices(const TriMesh &old_mesh, const
     std::vector<VertexField> out = fields;
     if (fields.empty())
         return out;
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < old_mesh.num_vertices(); ++v) {
         if (moved[v] == old_mesh.pos[v])
             continue;

@@ -1,5 +1,7 @@
 #include "geometry/quadric.hpp"
 
+#include "mesh/parallel.hpp"
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -9,7 +11,8 @@ namespace sfa {
 std::vector<Vec3> face_area_vectors(const TriMesh &mesh)
 {
     std::vector<Vec3> area(mesh.tri.size());
-    for (size_t t = 0; t < mesh.tri.size(); ++t) {
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t t = 0; t < mesh.num_triangles(); ++t) {
         const Triangle &c = mesh.tri[t];
         area[t] = 0.5 * (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]);
     }
@@ -24,11 +27,14 @@ Mat3 face_quadric(const Vec3 &area_vector)
 
 std::vector<Mat3> vertex_quadrics(const TriMesh &mesh, const std::vector<Vec3> &area_vectors)
 {
-    std::vector<Mat3> quadric(mesh.pos.size(), Mat3::Zero());
-    for (size_t t = 0; t < mesh.tri.size(); ++t) {
-        const Mat3 contribution = face_quadric(area_vectors[t]);
-        for (int32_t v : mesh.tri[t])
-            quadric[v] += contribution;
+    // Gathered per vertex over its fan (rather than scattered from the faces), so that
+    // vertices are independent and the loop runs in parallel.
+    std::vector<Mat3> quadric(mesh.pos.size());
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
+        Mat3 sum = Mat3::Zero();
+        mesh.for_each_outgoing(v, [&](int32_t h) { sum += face_quadric(area_vectors[TriMesh::face(h)]); });
+        quadric[v] = sum;
     }
     return quadric;
 }

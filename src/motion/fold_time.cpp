@@ -1,5 +1,7 @@
 #include "motion/fold_time.hpp"
 
+#include "mesh/parallel.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -26,20 +28,26 @@ double first_positive_root(double c0, double c1, double c2)
 
 int32_t first_folded_triangle(const TriMesh &mesh, const std::vector<Vec3> &moved)
 {
+    // A min-reduction: the same first triangle for any number of threads.
+    int32_t first = mesh.num_triangles();
+#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(min : first)
     for (int32_t t = 0; t < mesh.num_triangles(); ++t) {
         const Triangle &c = mesh.tri[t];
         const Vec3 before = (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]);
         const Vec3 after = (moved[c[1]] - moved[c[0]]).cross(moved[c[2]] - moved[c[0]]);
         if (!(before.dot(after) > 0))
-            return t;
+            first = std::min(first, t);
     }
-    return -1;
+    return first < mesh.num_triangles() ? first : -1;
 }
 
 double first_fold_time(const TriMesh &mesh, const std::vector<Vec3> &velocity)
 {
+    // min is exact, so the reduction gives the same time for any number of threads.
     double first = std::numeric_limits<double>::infinity();
-    for (const Triangle &t : mesh.tri) {
+#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(min : first)
+    for (int32_t k = 0; k < mesh.num_triangles(); ++k) {
+        const Triangle &t = mesh.tri[k];
         const Vec3 e1 = mesh.pos[t[1]] - mesh.pos[t[0]], e2 = mesh.pos[t[2]] - mesh.pos[t[0]];
         const Vec3 d1 = velocity[t[1]] - velocity[t[0]], d2 = velocity[t[2]] - velocity[t[0]];
         const Vec3 n0 = e1.cross(e2);

@@ -154,24 +154,41 @@ static void linear_field_stays_linear_on_a_flat_patch(void **state)
     sfa_destroy(s);
 }
 
-/* The same input gives bit-identical output, in either metric mode. */
-static void smoothing_is_deterministic(void **state)
+/* The same input gives bit-identical output, positions and fields, in either metric mode
+ * and for any number of threads (SFA_PARAM_THREADS; 0 is OpenMP's default), run after run. */
+static void smoothing_is_deterministic_for_any_thread_count(void **state)
 {
     (void)state;
-    sfa_mesh_data m = shape_noisy_icosphere(3, 1.0, 0.2, 5);
+    sfa_mesh_data m = shape_noisy_icosphere(4, 1.0, 0.2, 5);
+    double *field = malloc(sizeof(double) * (size_t)m.nverts);
+    for (int32_t v = 0; v < m.nverts; ++v)
+        field[v] = sin(3 * m.xyz[3 * v]) + m.xyz[3 * v + 2];
+    const int threads[] = {1, 2, 3, 0, 2};
     for (int anisotropic = 0; anisotropic <= 1; ++anisotropic) {
-        sfa_mesh_data results[2];
-        for (int run = 0; run < 2; ++run) {
+        snapshot first;
+        for (size_t run = 0; run < sizeof threads / sizeof threads[0]; ++run) {
             sfa_surface *s = surface_of(&m);
+            int32_t id;
+            assert_int_equal(sfa_add_field(s, 1, field, &id), SFA_OK);
             assert_int_equal(sfa_set_param(s, SFA_PARAM_ANISOTROPIC, anisotropic), SFA_OK);
+            assert_int_equal(sfa_set_param(s, SFA_PARAM_THREADS, threads[run]), SFA_OK);
             assert_int_equal(sfa_smooth(s, 3), SFA_OK);
-            results[run] = read_back(s);
+            assert_int_equal(sfa_set_param(s, SFA_PARAM_THREADS, 0), SFA_OK); /* compare the rest */
+            if (run == 0) {
+                snapshot_take(s, &first);
+            } else {
+                snapshot result;
+                char why[256];
+                snapshot_take(s, &result);
+                if (!snapshot_equal(&first, &result, why, sizeof why))
+                    fail_msg("%d threads differ from 1 thread: %s", threads[run], why);
+                snapshot_free(&result);
+            }
             sfa_destroy(s);
         }
-        assert_memory_equal(results[0].xyz, results[1].xyz, sizeof(double) * 3 * (size_t)m.nverts);
-        mesh_free(&results[0]);
-        mesh_free(&results[1]);
+        snapshot_free(&first);
     }
+    free(field);
     mesh_free(&m);
 }
 
@@ -219,7 +236,7 @@ int main(void)
         cmocka_unit_test(jittered_sphere_gets_better_angles_and_keeps_volume_and_shape),
         cmocka_unit_test(jittered_box_keeps_corners_edges_planes_and_volume),
         cmocka_unit_test(linear_field_stays_linear_on_a_flat_patch),
-        cmocka_unit_test(smoothing_is_deterministic),
+        cmocka_unit_test(smoothing_is_deterministic_for_any_thread_count),
         cmocka_unit_test(nothing_lost_when_memory_runs_out),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
