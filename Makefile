@@ -55,7 +55,9 @@ SAN_TESTS        := $(patsubst build/tests/%,build/san/tests/%,$(C_TESTS))
 ALLOC_HOOK_OBJ   := build/tests/c/alloc_hook/alloc_hook.o
 FORTRAN_TEST     := build/tests/test_fortran
 PLUGIN_TEST      := build/tests/test_plugin
-BENCHES          := $(patsubst bench/%.c,build/bench/%,$(sort $(wildcard bench/*.c)))
+# C benchmarks use the public API; C++ ones (bench/*.cpp) time internal steps.
+BENCHES          := $(patsubst bench/%.c,build/bench/%,$(sort $(wildcard bench/*.c))) \
+                    $(patsubst bench/%.cpp,build/bench/%,$(sort $(wildcard bench/*.cpp)))
 
 TEST_RPATH := -Wl,-rpath,'$$ORIGIN/../../lib'
 
@@ -171,6 +173,9 @@ build/bench/%: bench/%.c $(TEST_SUPPORT_OBJ) $(LIB_SO) $(LIB_DEV)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -Itests/c -Iapps/surfadapt -o $@ $< $(TEST_SUPPORT_OBJ) -Llib -lsurfadapt -lm \
 	  $(TEST_RPATH)
+build/bench/%: bench/%.cpp $(TEST_SUPPORT_OBJ) $(LIB_A)
+	@mkdir -p $(@D)
+	$(CXX) $(CXXFLAGS) -Ibench -Iapps/surfadapt -o $@ $< $(TEST_SUPPORT_OBJ) $(LIB_A) -lm
 bench: all $(BENCHES)
 	@for b in $(BENCHES); do $$b || exit 1; done
 

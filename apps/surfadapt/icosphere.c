@@ -28,18 +28,32 @@ static int32_t midpoint(edge_table *e, double *xyz, int32_t *nverts, int32_t a, 
     return m;
 }
 
+/* The icosahedron: g is the golden ratio. */
+#define G 1.6180339887498948482
+static const double base_xyz[12][3] = {{-1, G, 0}, {1, G, 0},  {-1, -G, 0}, {1, -G, 0}, {0, -1, G},  {0, 1, G},
+                                       {0, -1, -G}, {0, 1, -G}, {G, 0, -1}, {G, 0, 1},  {-G, 0, -1}, {-G, 0, 1}};
+static const int32_t base_tris[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                         {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                         {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                         {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+#undef G
+
+/* Every vertex projected onto the sphere. */
+static void project(double *xyz, int32_t nverts, double radius, const double center[3])
+{
+    for (int32_t v = 0; v < nverts; ++v) {
+        double *p = xyz + 3 * v;
+        const double scale = radius / sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        for (int c = 0; c < 3; ++c)
+            p[c] = center[c] + scale * p[c];
+    }
+}
+
 int icosphere(int subdivisions, double radius, const double center[3], int32_t *nverts_out, double **xyz_out,
               int32_t *ntris_out, int32_t **tris_out)
 {
     if (subdivisions < 0 || subdivisions > 10)
         return -1;
-    const double g = (1 + sqrt(5.0)) / 2;
-    const double base_xyz[12][3] = {{-1, g, 0}, {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
-                                    {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
-    const int32_t base_tris[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                      {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                      {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                      {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
     int64_t final_tris = 20, final_verts;
     for (int k = 0; k < subdivisions; ++k)
         final_tris *= 4;
@@ -79,12 +93,7 @@ int icosphere(int subdivisions, double radius, const double center[3], int32_t *
             tris = scratch;
             scratch = swap;
         }
-        for (int32_t v = 0; v < nverts; ++v) {
-            double *p = xyz + 3 * v;
-            const double scale = radius / sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-            for (int c = 0; c < 3; ++c)
-                p[c] = center[c] + scale * p[c];
-        }
+        project(xyz, nverts, radius, center);
         *nverts_out = nverts;
         *ntris_out = ntris;
         *xyz_out = xyz;
@@ -100,5 +109,92 @@ int icosphere(int subdivisions, double radius, const double center[3], int32_t *
         free(tris);
         return -1;
     }
+    return 0;
+}
+
+int geodesic_sphere(int frequency, double radius, const double center[3], int32_t *nverts_out, double **xyz_out,
+                    int32_t *ntris_out, int32_t **tris_out)
+{
+    const int n = frequency;
+    if (n < 1 || n > 10000)
+        return -1;
+    /* Vertices: the 12 corners, then n - 1 points on each of the 30 edges (numbered from
+     * the edge's lower corner), then the points inside each face. */
+    const int32_t nverts = 10 * n * n + 2, ntris = 20 * n * n;
+    double *xyz = malloc(sizeof(double) * 3 * (size_t)nverts);
+    int32_t *tris = malloc(sizeof(int32_t) * 3 * (size_t)ntris);
+    int32_t *row = malloc(sizeof(int32_t) * (size_t)(n + 1) * (size_t)(n + 1)); /* one face's points */
+    if (!xyz || !tris || !row) {
+        free(xyz);
+        free(tris);
+        free(row);
+        return -1;
+    }
+    int32_t edge_base[12][12];
+    for (int a = 0; a < 12; ++a)
+        for (int b = 0; b < 12; ++b)
+            edge_base[a][b] = -1;
+    int32_t count = 12, out = 0;
+    for (int v = 0; v < 12; ++v)
+        for (int c = 0; c < 3; ++c)
+            xyz[3 * v + c] = base_xyz[v][c];
+    /* The index of the point k steps (of n) from corner x towards corner y. */
+#define EDGE_POINT(x, y, k) \
+    ((x) < (y) ? edge_base[x][y] + (k) - 1 : edge_base[y][x] + (n - (k)) - 1)
+    for (int f = 0; f < 20; ++f) {
+        const int32_t a = base_tris[f][0], b = base_tris[f][1], c = base_tris[f][2];
+        const int32_t corners[3][2] = {{a, b}, {b, c}, {c, a}};
+        for (int e = 0; e < 3; ++e) {
+            const int32_t lo = corners[e][0] < corners[e][1] ? corners[e][0] : corners[e][1];
+            const int32_t hi = corners[e][0] ^ corners[e][1] ^ lo;
+            if (edge_base[lo][hi] >= 0)
+                continue;
+            edge_base[lo][hi] = count;
+            for (int k = 1; k < n; ++k, ++count)
+                for (int d = 0; d < 3; ++d)
+                    xyz[3 * count + d] = base_xyz[lo][d] + (base_xyz[hi][d] - base_xyz[lo][d]) * k / n;
+        }
+        /* Point (i, j) = a + i/n (b - a) + j/n (c - a), i + j <= n. */
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; i + j <= n; ++j) {
+                int32_t id;
+                if (i == 0 && j == 0)
+                    id = a;
+                else if (i == n)
+                    id = b;
+                else if (j == n)
+                    id = c;
+                else if (j == 0)
+                    id = EDGE_POINT(a, b, i);
+                else if (i == 0)
+                    id = EDGE_POINT(a, c, j);
+                else if (i + j == n)
+                    id = EDGE_POINT(b, c, j);
+                else {
+                    id = count++;
+                    for (int d = 0; d < 3; ++d)
+                        xyz[3 * id + d] = base_xyz[a][d] + ((base_xyz[b][d] - base_xyz[a][d]) * i +
+                                                            (base_xyz[c][d] - base_xyz[a][d]) * j) / n;
+                }
+                row[i * (n + 1) + j] = id;
+            }
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; i + j < n; ++j) {
+                const int32_t p = row[i * (n + 1) + j], pb = row[(i + 1) * (n + 1) + j], pc = row[i * (n + 1) + j + 1];
+                tris[out++] = p, tris[out++] = pb, tris[out++] = pc;
+                if (i + j < n - 1) {
+                    tris[out++] = pb;
+                    tris[out++] = row[(i + 1) * (n + 1) + j + 1];
+                    tris[out++] = pc;
+                }
+            }
+    }
+#undef EDGE_POINT
+    free(row);
+    project(xyz, nverts, radius, center);
+    *nverts_out = nverts;
+    *ntris_out = ntris;
+    *xyz_out = xyz;
+    *tris_out = tris;
     return 0;
 }

@@ -1,6 +1,8 @@
 /* sfa_measure on shapes whose answers are known in closed form. */
 #include "support/testing.h"
 
+#include "icosphere.h"
+
 static const double pi = 3.14159265358979323846;
 
 static void unit_cube(void **state)
@@ -93,6 +95,34 @@ static void icosphere_matches_tetrahedra(void **state)
     mesh_free(&sphere);
 }
 
+/* Geodesic spheres of any frequency are valid closed meshes (sfa_set_mesh checks manifold
+ * and orientation) with the documented counts; frequency 2^k has the icosphere's volume. */
+static void geodesic_spheres_are_valid_at_any_frequency(void **state)
+{
+    (void)state;
+    const double center[3] = {0, 0, 0};
+    const int frequencies[] = {1, 2, 3, 5, 8, 48};
+    for (size_t k = 0; k < sizeof frequencies / sizeof frequencies[0]; ++k) {
+        const int n = frequencies[k];
+        sfa_mesh_data m;
+        assert_int_equal(geodesic_sphere(n, 1.0, center, &m.nverts, &m.xyz, &m.ntris, &m.tris), 0);
+        assert_int_equal(m.nverts, 10 * n * n + 2);
+        assert_int_equal(m.ntris, 20 * n * n);
+        sfa_surface *s = make_surface(&m, 0);
+        const double volume = measure(s, SFA_MEASURE_VOLUME);
+        assert_true(volume > 0 && volume < 4.0 / 3.0 * pi);
+        if (n == 1 || n == 2 || n == 8) {
+            sfa_mesh_data ico = shape_icosphere(n == 1 ? 0 : n == 2 ? 1 : 3, 1.0);
+            sfa_surface *t = make_surface(&ico, 0);
+            assert_near(volume, measure(t, SFA_MEASURE_VOLUME), 1e-12);
+            sfa_destroy(t);
+            mesh_free(&ico);
+        }
+        sfa_destroy(s);
+        mesh_free(&m);
+    }
+}
+
 static void open_flat_patch(void **state)
 {
     (void)state;
@@ -140,6 +170,7 @@ int main(void)
         cmocka_unit_test(translated_cube),
         cmocka_unit_test(reversed_cube),
         cmocka_unit_test(icosphere_matches_tetrahedra),
+        cmocka_unit_test(geodesic_spheres_are_valid_at_any_frequency),
         cmocka_unit_test(open_flat_patch),
         cmocka_unit_test(bad_arguments_and_state),
     };
