@@ -26,6 +26,10 @@
  *   parameters) is exactly as before, and sfa_last_error() says what was wrong.
  * - **Threads**: no global mutable state. Different handles may be used from
  *   different threads at the same time; one handle by one thread at a time.
+ *   Inside a call, per-vertex and per-edge loops run on OpenMP threads
+ *   (::SFA_PARAM_THREADS, default OpenMP's own setting); called from inside the host's
+ *   own parallel region they run on the calling thread alone, as OpenMP nests. Results
+ *   are bit-identical for any number of threads.
  */
 #ifndef SURFADAPT_H
 #define SURFADAPT_H
