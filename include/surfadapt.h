@@ -28,8 +28,8 @@
  *   different threads at the same time; one handle by one thread at a time.
  *   Inside a call, per-vertex and per-edge loops run on OpenMP threads
  *   (::SFA_PARAM_THREADS, default OpenMP's own setting); called from inside the host's
- *   own parallel region they run on the calling thread alone, as OpenMP nests. Results
- *   are bit-identical for any number of threads.
+ *   own parallel region they follow OpenMP's nesting settings (by default they run on the
+ *   calling thread alone). Results are bit-identical for any number of threads.
  */
 #ifndef SURFADAPT_H
 #define SURFADAPT_H
