@@ -7,11 +7,10 @@
 #include "mesh/validate.hpp"
 
 extern "C" {
-#include "icosphere.h"
+#include "jittered_sphere.h"
 #include "timing.h"
 }
 
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <unistd.h>
@@ -58,26 +57,11 @@ Figures time_pass(const TriMesh &mesh, int threads)
 
 int main()
 {
-    const double center[3] = {0, 0, 0};
     int32_t nverts, ntris;
     double *xyz;
     int32_t *tris;
-    if (geodesic_sphere(frequency, 1.0, center, &nverts, &xyz, &ntris, &tris) != 0)
+    if (jittered_sphere(frequency, &nverts, &xyz, &ntris, &tris) != 0)
         return 1;
-    // Vertices moved along the sphere by up to a third of an edge, so that edges need flips.
-    uint64_t state = 12345;
-    const double edge = 1.1 / frequency;
-    for (int32_t v = 0; v < nverts; ++v) {
-        Vec3 p(xyz + 3 * v), d;
-        for (int k = 0; k < 3; ++k) {
-            state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-            d[k] = double(state >> 11) / double(1ULL << 53) - 0.5;
-        }
-        d -= d.dot(p) * p;
-        p = (p + edge / 3 * d.normalized() * double(v % 7) / 7).normalized();
-        for (int k = 0; k < 3; ++k)
-            xyz[3 * v + k] = p[k];
-    }
     const TriMesh mesh = validated_mesh(MeshInput{nverts, xyz, ntris, tris, 0, false});
     std::free(xyz);
     std::free(tris);

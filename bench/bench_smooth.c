@@ -3,42 +3,16 @@
  * thread and with every core (OpenMP speed-up), and isotropic as a baseline. One JSON line
  * per case: the median of several runs, in seconds and ns per vertex. */
 #define _DEFAULT_SOURCE /* sysconf(_SC_NPROCESSORS_ONLN) */
-#include "icosphere.h"
+#include "jittered_sphere.h"
 #include "timing.h"
 
 #include "surfadapt.h"
 
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <unistd.h>
 
 enum { runs = 5, frequency = 316 };
-
-/* Each vertex moved along the sphere by up to a third of an edge, deterministically. */
-static void jitter_tangentially(double *xyz, int32_t nverts, double edge)
-{
-    uint64_t state = 12345;
-    for (int32_t v = 0; v < nverts; ++v) {
-        double *p = xyz + 3 * v, d[3], radial = 0, norm = 0;
-        for (int k = 0; k < 3; ++k) {
-            state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-            d[k] = (double)(state >> 11) / (double)(1ULL << 53) - 0.5;
-            radial += d[k] * p[k];
-        }
-        for (int k = 0; k < 3; ++k) {
-            d[k] -= radial * p[k];
-            norm += d[k] * d[k];
-        }
-        double length = 0;
-        for (int k = 0; k < 3; ++k) {
-            p[k] += edge / 3 * d[k] / sqrt(norm) * (double)(v % 7) / 7;
-            length += p[k] * p[k];
-        }
-        for (int k = 0; k < 3; ++k)
-            p[k] /= sqrt(length);
-    }
-}
 
 static double time_one_sweep(int32_t nverts, const double *xyz, int32_t ntris, const int32_t *tris, int anisotropic,
                              int threads)
@@ -66,13 +40,11 @@ static double time_one_sweep(int32_t nverts, const double *xyz, int32_t ntris, c
 
 int main(void)
 {
-    const double center[3] = {0, 0, 0};
     int32_t nverts, ntris;
     double *xyz;
     int32_t *tris;
-    if (geodesic_sphere(frequency, 1.0, center, &nverts, &xyz, &ntris, &tris) != 0)
+    if (jittered_sphere(frequency, &nverts, &xyz, &ntris, &tris) != 0)
         return 1;
-    jitter_tangentially(xyz, nverts, 1.1 / frequency);
     const int cores = (int)sysconf(_SC_NPROCESSORS_ONLN);
     const double serial = time_one_sweep(nverts, xyz, ntris, tris, 1, 1);
     const double parallel = time_one_sweep(nverts, xyz, ntris, tris, 1, cores);

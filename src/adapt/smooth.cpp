@@ -68,20 +68,21 @@ Vec3 ridge_motion(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t 
     }
     const double distance = sum_moment / sum_weight;
 
-    // The circle through p and the two ends: centre p + c with c = (|u|^2 w x n + |w|^2 n x u)
-    // / (2 |n|^2), n = u x w, for u, w the ends relative to p.
+    // The circle through p and the two ends has its centre at p + to_centre, with
+    // to_centre = (|u|^2 w x n + |w|^2 n x u) / (2 |n|^2), n = u x w, for u, w the ends
+    // relative to p. The motion ends on that circle, `distance` along it.
     const Vec3 u = mesh.pos[ends[0]] - p, w = mesh.pos[ends[1]] - p, n = u.cross(w);
     const double scale2 = u.squaredNorm() * w.squaredNorm();
     if (n.squaredNorm() <= 1e-24 * scale2) // straight (to round-off): the chord is the ridge
         return distance * direction;
-    const Vec3 centre = (u.squaredNorm() * w.cross(n) + w.squaredNorm() * n.cross(u)) / (2 * n.squaredNorm());
-    const Vec3 radial = -centre; // from the centre to p
+    const Vec3 to_centre = (u.squaredNorm() * w.cross(n) + w.squaredNorm() * n.cross(u)) / (2 * n.squaredNorm());
+    const Vec3 radial = -to_centre; // from the centre to p
     const double radius = radial.norm();
     Vec3 tangent = n.normalized().cross(radial / radius);
     if (tangent.dot(direction) < 0)
         tangent = -tangent;
     const double angle = distance / radius;
-    return centre + std::cos(angle) * radial + std::sin(angle) * radius * tangent;
+    return to_centre + std::cos(angle) * radial + std::sin(angle) * radius * tangent;
 }
 
 // The gradient of the enclosed volume with respect to one vertex: moving v alone by d
@@ -120,7 +121,8 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
         if (rank == 2)
             continue; // corners never move
         if (rank == 0) {
-            motion[v] = volume_corrected(tangent_target(mesh, analysis, v), volume_gradient(mesh, v), analysis.metric[v].normal);
+            motion[v] = volume_corrected(tangent_target(mesh, analysis, v), volume_gradient(mesh, v),
+                                         analysis.metric[v].normal);
         } else {
             // No volume correction: it would move the vertex off its ridge. Along a straight
             // ridge the motion changes no volume; along a curved one, a second-order amount.
