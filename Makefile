@@ -84,10 +84,12 @@ build/%.o: %.c | deps
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -Iapps/surfadapt -MMD -MP -c $< -o $@
 
+# -z nodelete: dlclose() must not unload the library (and OpenMP's runtime with it) while
+# OpenMP's idle worker threads still live; a plugin host crashed at exit without it.
 $(LIB_REAL): $(LIB_OBJS) src/surfadapt.map
 	@mkdir -p $(@D)
 	$(CXX) -shared $(OPENMP) -Wl,-soname,$(LIB_NAME).$(SOVERSION) -Wl,--version-script=src/surfadapt.map \
-	  -Wl,--no-undefined -o $@ $(LIB_OBJS)
+	  -Wl,--no-undefined -Wl,-z,nodelete -o $@ $(LIB_OBJS)
 
 $(LIB_SO): $(LIB_REAL)
 	ln -sf $(LIB_NAME).$(VERSION) $@
