@@ -1,6 +1,9 @@
-// Unit tests of the mesh core: adjacency, one-ring walks, the invariant checker and the
-// edge flip.
+// Unit tests of the mesh core: adjacency, one-ring walks, the invariant checker, and the
+// edge flip, split and contraction with compaction.
+#include "mesh/compact.hpp"
+#include "mesh/edge_collapse.hpp"
 #include "mesh/edge_flip.hpp"
+#include "mesh/edge_split.hpp"
 #include "mesh/invariants.hpp"
 #include "mesh/validate.hpp"
 
@@ -15,6 +18,8 @@
 
 extern "C" {
 #include <cmocka.h>
+
+#include "support/shapes.h"
 }
 
 using namespace sfa;
@@ -188,6 +193,84 @@ void flips_never_make_a_duplicate_edge_or_cross_a_boundary(void **)
             assert_false(flip_keeps_manifold(patch, h));
 }
 
+TriMesh mesh_of(const sfa_mesh_data &m) { return validated_mesh(MeshInput{m.nverts, m.xyz, m.ntris, m.tris, 0, false}); }
+
+int32_t euler_characteristic(const TriMesh &mesh)
+{
+    int32_t edges = 0;
+    for (int32_t h = 0; h < 3 * mesh.num_triangles(); ++h)
+        edges += mesh.opp[h] < 0 || mesh.opp[h] > h;
+    return mesh.num_vertices() - edges + mesh.num_triangles();
+}
+
+void splits_keep_every_invariant(void **)
+{
+    sfa_mesh_data sphere = shape_icosphere(1, 1.0);
+    for (TriMesh mesh : {cube(), grid(), mesh_of(sphere)}) {
+        const int32_t euler = euler_characteristic(mesh);
+        shapes_rng rng = rng_seed(3);
+        for (int k = 0; k < 60; ++k) {
+            const int32_t h = static_cast<int32_t>(rng_next(&rng) % (3 * mesh.tri.size()));
+            const int32_t vertices = mesh.num_vertices(), triangles = mesh.num_triangles();
+            const int32_t a = mesh.tail(h), b = mesh.head(h);
+            const bool interior = mesh.opp[h] >= 0;
+            const Vec3 middle = (mesh.pos[a] + mesh.pos[b]) / 2;
+            const int32_t m = split_edge(mesh, h, middle);
+            assert_string_equal(invariant_violation(mesh).c_str(), "");
+            assert_int_equal(m, vertices);
+            assert_int_equal(mesh.num_triangles(), triangles + (interior ? 2 : 1));
+            assert_int_equal(mesh.tail(h), a);
+            assert_int_equal(mesh.head(h), m);
+            assert_true(mesh.pos[m] == middle);
+            assert_int_equal(mesh.is_boundary_vertex(m), !interior);
+            assert_int_equal(euler_characteristic(mesh), euler);
+        }
+    }
+    mesh_free(&sphere);
+}
+
+void contractions_keep_every_invariant_and_the_topology(void **)
+{
+    sfa_mesh_data sphere = shape_icosphere(2, 1.0), patch = shape_grid(6, 5, 0.1);
+    for (TriMesh mesh : {mesh_of(sphere), mesh_of(patch)}) {
+        const int32_t euler = euler_characteristic(mesh);
+        shapes_rng rng = rng_seed(11);
+        int collapses = 0;
+        for (int attempt = 0; attempt < 4000 && mesh.num_vertices() > 8; ++attempt) {
+            const int32_t h = static_cast<int32_t>(rng_next(&rng) % (3 * mesh.tri.size()));
+            if (!collapse_keeps_manifold(mesh, h))
+                continue;
+            const int32_t keep = mesh.head(h), gone = mesh.tail(h);
+            const Vec3 target = mesh.pos[keep];
+            collapse_edge(mesh, h, target);
+            const std::vector<int32_t> renumber = compact(mesh);
+            assert_int_equal(renumber[gone], -1);
+            assert_true(mesh.pos[renumber[keep]] == target);
+            assert_string_equal(invariant_violation(mesh).c_str(), "");
+            assert_int_equal(euler_characteristic(mesh), euler);
+            ++collapses;
+        }
+        assert_true(collapses > 20);
+    }
+    mesh_free(&sphere);
+    mesh_free(&patch);
+}
+
+void contractions_that_would_break_the_surface_are_refused(void **)
+{
+    // A tetrahedron cannot lose an edge (the opposite vertices would keep two neighbours).
+    const double xyz[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const int32_t tris[] = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2};
+    const TriMesh tetrahedron = validated_mesh(MeshInput{4, xyz, 4, tris, 0, false});
+    for (int32_t h = 0; h < 12; ++h)
+        assert_false(collapse_keeps_manifold(tetrahedron, h));
+    // An interior edge between two boundary vertices would pinch an open surface.
+    const TriMesh patch = grid();
+    for (int32_t h = 0; h < 3 * patch.num_triangles(); ++h)
+        if (patch.opp[h] >= 0 && patch.is_boundary_vertex(patch.tail(h)) && patch.is_boundary_vertex(patch.head(h)))
+            assert_false(collapse_keeps_manifold(patch, h));
+}
+
 } // namespace
 
 int main()
@@ -202,6 +285,9 @@ int main()
         cmocka_unit_test(build_adjacency_matches_validation),
         cmocka_unit_test(flips_keep_every_invariant_and_undo_themselves),
         cmocka_unit_test(flips_never_make_a_duplicate_edge_or_cross_a_boundary),
+        cmocka_unit_test(splits_keep_every_invariant),
+        cmocka_unit_test(contractions_keep_every_invariant_and_the_topology),
+        cmocka_unit_test(contractions_that_would_break_the_surface_are_refused),
     };
     return cmocka_run_group_tests_name("unit_mesh", tests, nullptr, nullptr);
 }
