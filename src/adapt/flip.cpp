@@ -78,17 +78,6 @@ Verdict judge(const TriMesh &mesh, int32_t h, const std::vector<Mat3> &quadric, 
     return {angle_p + angle_q > pi + delaunay_slack, std::max(angle_p, angle_q)};
 }
 
-// The half-edge a -> b, or -1 if a and b are no longer joined.
-int32_t halfedge_between(const TriMesh &mesh, int32_t a, int32_t b)
-{
-    int32_t found = -1;
-    mesh.for_each_outgoing(a, [&](int32_t h) {
-        if (mesh.head(h) == b)
-            found = h;
-    });
-    return found;
-}
-
 // Keeps the quadrics exact through a flip: the two triangles' terms leave their old
 // corners and enter their new ones.
 void update_quadrics(std::vector<Mat3> &quadric, const TriMesh &mesh, int32_t t0, int32_t t1, int sign)
@@ -135,7 +124,7 @@ int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const Flip
     int32_t flips = 0;
     for (const Candidate &candidate : candidates) {
         // Earlier flips may have removed this edge or changed its quad: judge it again.
-        const int32_t h = halfedge_between(mesh, candidate.a, candidate.b);
+        const int32_t h = mesh.halfedge(candidate.a, candidate.b);
         if (h < 0 || !may_flip(h) || !judge(mesh, h, quadric, settings, cos_max_dihedral).flip)
             continue;
         const int32_t t0 = TriMesh::face(h), t1 = TriMesh::face(mesh.opp[h]);

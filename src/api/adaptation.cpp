@@ -1,12 +1,23 @@
 // Adaptation: sfa_smooth, sfa_adapt.
 #include "api/analysis_settings.hpp"
 
+#include "adapt/adapt.hpp"
 #include "adapt/smooth.hpp"
 #include "fields/transfer.hpp"
+#include "mesh/invariants.hpp"
 
+#include <string>
 #include <utility>
 
 using namespace sfa;
+
+namespace {
+// One sfa_adapt call makes at most this many passes of repair and optimization; a host
+// that wants more calls it again (each call starts from a fresh analysis anyway).
+constexpr int max_adapt_passes = 8;
+// Smoothing sweeps per pass: two let the vertices settle around what repair changed.
+constexpr int smoothing_sweeps_per_pass = 2;
+} // namespace
 
 extern "C" {
 
@@ -32,7 +43,37 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
 {
     return call(s, "sfa_adapt", [&] {
         require_mesh(s);
-        fail(Status::internal, "not implemented yet: the full adaptation (paper §3-§4) comes in a later release");
+        const Parameters &p = s->params;
+        const double edge_length = p.get(Param::edge_length) > 0 ? p.get(Param::edge_length) : s->mean_edge_length_at_set;
+        const AdaptSettings settings{feature_thresholds(p), metric_bounds(p), p.get(Param::flip_dihedral_angle) * radians,
+                                     repair_settings(p, edge_length), max_adapt_passes, smoothing_sweeps_per_pass};
+
+        // Work on copies; the velocities travel as one more field. Commit only at the end.
+        TriMesh mesh = s->mesh;
+        std::vector<VertexField> data = s->fields;
+        const bool has_velocity = !s->velocity.empty();
+        if (has_velocity) {
+            VertexField velocity{3, std::vector<double>(3 * s->velocity.size())};
+            for (size_t v = 0; v < s->velocity.size(); ++v)
+                for (int c = 0; c < 3; ++c)
+                    velocity.values[3 * v + c] = s->velocity[v][c];
+            data.push_back(std::move(velocity));
+        }
+        adapt_surface(mesh, data, settings);
+        const std::string broken = invariant_violation(mesh);
+        if (!broken.empty())
+            fail(Status::internal, ("the adapted mesh is broken (" + broken + "); the surface is unchanged").c_str());
+
+        std::vector<Vec3> velocity;
+        if (has_velocity) {
+            velocity.resize(mesh.pos.size());
+            for (size_t v = 0; v < velocity.size(); ++v)
+                velocity[v] = Vec3(data.back().values.data() + 3 * v);
+            data.pop_back();
+        }
+        s->mesh = std::move(mesh);
+        s->fields.swap(data);
+        s->velocity.swap(velocity);
     });
 }
 

@@ -52,6 +52,17 @@ struct TriMesh {
             fn(tail(incoming), incoming);
     }
 
+    // The half-edge a -> b, or -1 if there is none (a boundary edge has only one of its two
+    // directions). O(valence of a).
+    int32_t halfedge(int32_t a, int32_t b) const {
+        int32_t found = -1;
+        for_each_outgoing(a, [&](int32_t h) {
+            if (head(h) == b)
+                found = h;
+        });
+        return found;
+    }
+
     // Calls fn(h) for every half-edge leaving v, counter-clockwise from v2h[v].
     template <class Fn>
     void for_each_outgoing(int32_t v, Fn &&fn) const {

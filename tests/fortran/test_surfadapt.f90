@@ -98,7 +98,7 @@ program test_surfadapt
   integer(c_int32_t), allocatable :: tri_out(:, :), ranks(:)
   integer(c_int32_t) :: vranks(nv)
   integer(c_int32_t) :: bad_tri(3, nt), small_tri(3, 1)
-  real(c_double) :: value, dt, dt_taken, t0, theta, c, sn
+  real(c_double) :: value, volume_before, dt, dt_taken, t0, theta, c, sn
   real(c_double) :: vel(3, nv), before(3, nv), expected(3, nv), small_xyz(3, 1)
   real(c_double) :: field(2, nv)
   real(c_double), target :: omega
@@ -292,22 +292,18 @@ program test_surfadapt
   call check('an unknown field id gives SFA_ERR_ARGUMENT', rc == SFA_ERR_ARGUMENT)
 
   ! ------------------------------------------------------------ adaptation
-  ! Smoothing a cube succeeds and moves nothing (every vertex is a corner). sfa_adapt is
-  ! not implemented in this release and returns SFA_ERR_INTERNAL; that assertion changes
-  ! to SFA_OK (and real checks) when adaptation lands.
+  ! Smoothing a cube succeeds and moves nothing (every vertex is a corner).
   rc = sfa_get_mesh_alloc(s, xyz_out, tri_out)
   before = cube_xyz
   if (rc == SFA_OK) before = xyz_out
   rc = sfa_smooth(s, 3_c_int32_t)
   call check('sfa_smooth on a cube succeeds', rc == SFA_OK)
-  rc = sfa_adapt(s)
-  call check('sfa_adapt gives SFA_ERR_INTERNAL (not implemented yet)', rc == SFA_ERR_INTERNAL)
   rc = sfa_get_mesh_alloc(s, xyz_out, tri_out)
   if (rc == SFA_OK) then
-    call check('smoothing and the failed sfa_adapt left the cube as it was', &
+    call check('smoothing left the cube as it was', &
          all(tri_out == cube_tri) .and. max_abs_diff(xyz_out, before) <= 0)
   else
-    call check('the failed calls left the mesh readable', .false., sfa_error_message(s))
+    call check('the mesh is readable after smoothing', .false., sfa_error_message(s))
   end if
 
   ! ------------------------------------------------------------ feature detection
@@ -322,6 +318,25 @@ program test_surfadapt
   rc = sfa_get_feature_ranks(s, nv - 1, vranks)
   call check('sfa_get_feature_ranks with a too small capacity gives SFA_ERR_ARGUMENT', &
        rc == SFA_ERR_ARGUMENT)
+
+  ! ------------------------------------------------------------ adaptation
+  ! At the edge length 0.25 set above, sfa_adapt refines the unit cube: more vertices, read
+  ! back with the new counts, the same volume, and still exactly 8 corners.
+  rc = sfa_measure(s, SFA_MEASURE_VOLUME, volume_before)
+  rc = sfa_adapt(s)
+  call check('sfa_adapt refines the cube', rc == SFA_OK, sfa_error_message(s))
+  rc = sfa_get_mesh_alloc(s, xyz_out, tri_out)
+  if (rc == SFA_OK) then
+    call check('the adapted mesh reads back with more vertices and triangles', &
+         size(xyz_out, 2) > nv .and. size(tri_out, 2) > nt .and. &
+         minval(tri_out) >= 1 .and. maxval(tri_out) <= size(xyz_out, 2))
+  else
+    call check('sfa_get_mesh_alloc after sfa_adapt', .false., sfa_error_message(s))
+  end if
+  rc = sfa_measure(s, SFA_MEASURE_VOLUME, value)
+  call check('sfa_adapt kept the volume', rc == SFA_OK .and. near(value, volume_before, 1e-9_c_double))
+  rc = sfa_get_feature_ranks_alloc(s, ranks)
+  call check('the adapted cube has 8 corners', rc == SFA_OK .and. count(ranks == 2) == 8)
 
   call sfa_destroy(s)
   s = c_null_ptr

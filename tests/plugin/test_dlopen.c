@@ -11,6 +11,7 @@
 #include <dlfcn.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "surfadapt.h"
@@ -208,6 +209,28 @@ int main(int argc, char **argv)
         printf("  status %d, %d corners\n", rc, corners);
     double aspect[8];
     check(api->get_vertex_frames(s, 8, NULL, NULL, aspect) == SFA_OK, "get_vertex_frames");
+
+    /* Adaptation through the table: refined to edge length 0.3, read back with the new
+       counts, same volume. */
+    double volume_before = 0, volume_after = 0;
+    api->measure(s, SFA_MEASURE_VOLUME, &volume_before);
+    check(api->set_param(s, SFA_PARAM_EDGE_LENGTH, 0.3) == SFA_OK, "set_param edge length 0.3");
+    rc = api->adapt(s);
+    if (!check(rc == SFA_OK, "adapt"))
+        printf("  status %d: %s\n", rc, api->last_error(s));
+    int32_t nv = 0, nt = 0;
+    check(api->get_counts(s, &nv, &nt) == SFA_OK && nv > 8 && nt == 2 * nv - 4, "adapted counts: more vertices, closed");
+    double *xyz = malloc(sizeof(double) * 3 * (size_t)(nv > 0 ? nv : 1));
+    int32_t *tris = malloc(sizeof(int32_t) * 3 * (size_t)(nt > 0 ? nt : 1));
+    int in_range = xyz && tris && api->get_mesh(s, nv, xyz, nt, tris, 0) == SFA_OK;
+    for (int32_t i = 0; in_range && i < 3 * nt; i++)
+        in_range = tris[i] >= 0 && tris[i] < nv;
+    check(in_range, "get_mesh reads the adapted mesh back");
+    free(xyz);
+    free(tris);
+    api->measure(s, SFA_MEASURE_VOLUME, &volume_after);
+    if (!check(fabs(volume_after - volume_before) <= 1e-9, "adapt kept the volume"))
+        printf("  %.17g -> %.17g\n", volume_before, volume_after);
 
     api->destroy(s);
     check(1, "destroy");

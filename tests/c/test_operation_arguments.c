@@ -1,8 +1,8 @@
-/* Argument and state checks of sfa_smooth and sfa_adapt. sfa_adapt still reports
- * SFA_ERR_INTERNAL "not implemented yet" and leaves the surface alone; that assertion
- * changes when it lands. Smoothing a cube succeeds and changes nothing: every vertex is a
- * corner, and corners never move. (Smoothing itself is tested in test_smooth.c, feature
- * detection in test_features.c.) */
+/* Argument and state checks of sfa_smooth and sfa_adapt. Smoothing a cube succeeds and
+ * changes nothing: every vertex is a corner, and corners never move. Adapting it at its
+ * own mean edge length changes nothing either: no edge is long enough to split, and
+ * corners are never contracted. Bad metric angles are refused before anything changes.
+ * (The operations themselves are tested in test_smooth.c and test_adapt.c.) */
 #include "support/testing.h"
 
 /* Calls `call` on a loaded cube and checks the outcome and that nothing changed. */
@@ -38,7 +38,11 @@ static void adapt(void **state)
     assert_int_equal(sfa_create(&empty), SFA_OK);
     assert_error(empty, sfa_adapt(empty), SFA_ERR_STATE, "");
     sfa_destroy(empty);
-    expect_on_cube(sfa_adapt(s), SFA_ERR_INTERNAL, "not implemented yet");
+    expect_on_cube(sfa_adapt(s), SFA_OK, "");
+    sfa_surface *s = make_cube_surface();
+    assert_int_equal(sfa_set_param(s, SFA_PARAM_METRIC_MIN_ANGLE, 40), SFA_OK);
+    expect_unchanged(s, sfa_adapt(s), SFA_ERR_ARGUMENT, "SFA_PARAM_METRIC_MIN_ANGLE");
+    sfa_destroy(s);
 }
 
 int main(void)

@@ -1,0 +1,35 @@
+#include "adapt/adapt.hpp"
+
+#include "adapt/contract.hpp"
+#include "adapt/smooth.hpp"
+#include "adapt/split.hpp"
+#include "fields/transfer.hpp"
+
+namespace sfa {
+
+AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings)
+{
+    AdaptCounts counts;
+    const auto analysis = [&] { return analyze_surface(mesh, settings.features, settings.metric); };
+    while (counts.passes < settings.max_passes) {
+        ++counts.passes;
+        // Repair first (§4): the density the desired edge length asks for, and no extreme
+        // angles; then optimization (§3) of the repaired mesh.
+        const int32_t splits = splitting_pass(mesh, analysis(), settings.repair, fields);
+        const int32_t contractions = contraction_pass(mesh, analysis(), settings.repair, fields);
+        const int32_t flips = flipping_pass(mesh, analysis(), FlipSettings{settings.metric, settings.flip_max_dihedral});
+        for (int sweep = 0; sweep < settings.smoothing_sweeps; ++sweep) {
+            std::vector<Vec3> moved = smoothing_sweep(mesh, analysis());
+            fields = fields_at_moved_vertices(mesh, moved, fields);
+            mesh.pos.swap(moved);
+        }
+        counts.splits += splits;
+        counts.contractions += contractions;
+        counts.flips += flips;
+        if (splits + contractions + flips == 0)
+            break;
+    }
+    return counts;
+}
+
+} // namespace sfa

@@ -1,0 +1,31 @@
+// The full adaptation (§3-§4): mesh optimization (smoothing, flipping) and mesh repair
+// (splitting, contraction), iterated.
+#pragma once
+
+#include "adapt/flip.hpp"
+#include "adapt/repair_settings.hpp"
+#include "fields/vertex_fields.hpp"
+
+#include <vector>
+
+namespace sfa {
+
+struct AdaptSettings {
+    FeatureThresholds features;
+    MetricBounds metric;
+    double flip_max_dihedral; // radians
+    RepairSettings repair;
+    int max_passes;       // iterations at most
+    int smoothing_sweeps; // per iteration
+};
+
+struct AdaptCounts {
+    int32_t passes = 0, splits = 0, contractions = 0, flips = 0;
+};
+
+// Each pass: split, contract, flip, then smooth, every step after a fresh analysis of the
+// mesh as it then is; until a pass changes no connectivity or max_passes were made. The
+// fields (one value set per vertex) follow every step. The mesh stays dense and valid.
+AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings);
+
+} // namespace sfa

@@ -1,0 +1,185 @@
+#include "adapt/contract.hpp"
+
+#include "adapt/ridge_set.hpp"
+#include "fields/transfer.hpp"
+#include "geometry/edge_neighbourhood.hpp"
+#include "geometry/quadric_error.hpp"
+#include "mesh/compact.hpp"
+#include "mesh/edge_collapse.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace sfa {
+namespace {
+
+// A face may turn this much at most: more is a fold in the making.
+const double cos_max_face_turn = 0.5; // 60 degrees
+// A face whose height is below this fraction of its longest edge is nearly flat (an angle
+// of about 0.06 degrees): it would spoil every normal computed from it.
+constexpr double min_height_ratio = 1e-3;
+
+// The physical and metric (eq. 4) lengths of the edges of h's triangles.
+struct EdgeLengths {
+    double metric_length, metric_longest;
+};
+
+EdgeLengths metric_lengths(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h)
+{
+    const auto length = [&](int32_t p, int32_t q) {
+        return metric_edge_length(mesh.pos[p], analysis.metric[p], mesh.pos[q], analysis.metric[q]);
+    };
+    const int32_t a = mesh.tail(h), b = mesh.head(h);
+    EdgeLengths out{length(a, b), length(a, b)};
+    for (int32_t side : {h, mesh.opp[h]}) {
+        if (side < 0)
+            continue;
+        const int32_t p = mesh.head(TriMesh::next(side));
+        out.metric_longest = std::max({out.metric_longest, length(a, p), length(b, p)});
+    }
+    return out;
+}
+
+bool wants_contraction(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h, const RepairSettings &s)
+{
+    const EdgeNeighbourhood n = edge_neighbourhood(mesh, h);
+    for (int k = 0; k < n.triangles; ++k)
+        if (n.opposite_angle[k] < s.small_angle && n.triangle_longest[k] < s.desired_length)
+            return true; // absolute small angle
+    if (n.length < s.contract_short_ratio * n.longest)
+        return true; // relative shortness
+    if (n.longest < s.contract_length && n.length <= n.shortest)
+        return true; // absolute small triangle
+    if (n.longest < s.desired_length && n.length < s.contract_small_ratio * n.longest) {
+        const EdgeLengths metric = metric_lengths(mesh, analysis, h); // relative small triangle,
+        return metric.metric_length < s.contract_small_ratio * metric.metric_longest; // in both spaces
+    }
+    return false;
+}
+
+// Every face around either end of h, the dying ones included.
+template <class Fn>
+void for_each_face_around(const TriMesh &mesh, int32_t h, Fn &&fn)
+{
+    mesh.for_each_outgoing(mesh.tail(h), [&](int32_t g) { fn(TriMesh::face(g)); });
+    mesh.for_each_outgoing(mesh.head(h), [&](int32_t g) {
+        const int32_t f = TriMesh::face(g);
+        const Triangle &t = mesh.tri[f];
+        if (t[0] != mesh.tail(h) && t[1] != mesh.tail(h) && t[2] != mesh.tail(h))
+            fn(f); // not seen from the tail already
+    });
+}
+
+// True if moving both ends of h to `merged` keeps every surviving face's orientation
+// (turned by at most 60 degrees) and shape (not nearly flat).
+bool faces_survive(const TriMesh &mesh, int32_t h, const Vec3 &merged)
+{
+    const int32_t a = mesh.tail(h), b = mesh.head(h);
+    bool ok = true;
+    for_each_face_around(mesh, h, [&](int32_t f) {
+        const Triangle &t = mesh.tri[f];
+        const bool has_a = t[0] == a || t[1] == a || t[2] == a, has_b = t[0] == b || t[1] == b || t[2] == b;
+        if (has_a && has_b)
+            return; // dies with the edge
+        Vec3 q[3];
+        for (int k = 0; k < 3; ++k)
+            q[k] = t[k] == a || t[k] == b ? merged : mesh.pos[t[k]];
+        const Vec3 before = (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]);
+        const Vec3 after = (q[1] - q[0]).cross(q[2] - q[0]);
+        const double longest2 = std::max({(q[1] - q[0]).squaredNorm(), (q[2] - q[1]).squaredNorm(),
+                                          (q[0] - q[2]).squaredNorm()});
+        // height / longest = |after| / longest^2
+        ok = ok && after.dot(before) >= cos_max_face_turn * after.norm() * before.norm() &&
+             after.norm() >= min_height_ratio * longest2;
+    });
+    return ok;
+}
+
+// Where the merged vertex goes (§4.2), or false if the contraction would spoil a feature.
+bool merged_position(const TriMesh &mesh, int32_t h, const std::vector<int8_t> &rank, const RidgeSet &ridges,
+                     Vec3 &merged, int8_t &merged_rank)
+{
+    const int32_t a = mesh.tail(h), b = mesh.head(h);
+    const int8_t ra = rank[a], rb = rank[b];
+    if (ra == 2 && rb == 2)
+        return false; // a corner would disappear
+    if (ra > 0 && rb > 0 && !ridges.contains(a, b))
+        return false; // two ridge curves (or a curve and a corner) would merge
+    merged_rank = std::max(ra, rb);
+    if (ra != rb) {
+        merged = mesh.pos[ra > rb ? a : b]; // the feature vertex stays where it is
+        return true;
+    }
+    merged = (mesh.pos[a] + mesh.pos[b]) / 2;
+    if (ra > 0)
+        return true; // on the ridge line
+    Vec3 normal = Vec3::Zero();
+    for_each_face_around(mesh, h, [&](int32_t f) {
+        const Triangle &t = mesh.tri[f];
+        normal += (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]);
+    });
+    merged = quadric_error_minimum_along(
+        mesh, [&](auto &&visit) { for_each_face_around(mesh, h, visit); }, merged, normal.normalized());
+    return true;
+}
+
+struct Candidate {
+    double length;
+    int32_t a, b;
+};
+
+} // namespace
+
+int32_t contraction_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const RepairSettings &settings,
+                         std::vector<VertexField> &fields)
+{
+    RidgeSet ridges(analysis.features.ridge_edges);
+    std::vector<int8_t> rank = analysis.features.rank;
+    std::vector<Candidate> candidates;
+    for (int32_t h = 0; h < 3 * mesh.num_triangles(); ++h) {
+        if (mesh.opp[h] >= 0 && mesh.opp[h] < h)
+            continue; // each edge once
+        if (wants_contraction(mesh, analysis, h, settings))
+            candidates.push_back({(mesh.pos[mesh.head(h)] - mesh.pos[mesh.tail(h)]).norm(), mesh.tail(h), mesh.head(h)});
+    }
+    // Shortest first (§4.2); ties in vertex order.
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate &x, const Candidate &y) {
+        return std::tie(x.length, x.a, x.b) < std::tie(y.length, y.a, y.b);
+    });
+
+    int32_t contractions = 0;
+    std::vector<int32_t> ridge_neighbours;
+    for (const Candidate &c : candidates) {
+        if (is_dead_vertex(mesh, c.a) || is_dead_vertex(mesh, c.b))
+            continue;
+        int32_t h = mesh.halfedge(c.a, c.b);
+        if (h < 0)
+            h = mesh.halfedge(c.b, c.a);
+        Vec3 merged;
+        int8_t merged_rank;
+        if (h < 0 || !wants_contraction(mesh, analysis, h, settings) || !collapse_keeps_manifold(mesh, h) ||
+            !merged_position(mesh, h, rank, ridges, merged, merged_rank) || !faces_survive(mesh, h, merged))
+            continue;
+        const Stencil stencil = stencil_over(mesh, merged, [&](auto &&visit) { for_each_face_around(mesh, h, visit); });
+        const int32_t gone = mesh.tail(h), keep = mesh.head(h);
+        ridge_neighbours.clear();
+        mesh.for_each_neighbour(gone, [&](int32_t w, int32_t) {
+            if (w != keep && ridges.contains(gone, w))
+                ridge_neighbours.push_back(w);
+        });
+        collapse_edge(mesh, h, merged);
+        set_interpolated(fields, keep, stencil);
+        rank[keep] = merged_rank;
+        ridges.remove(gone, keep);
+        for (int32_t w : ridge_neighbours) {
+            ridges.remove(gone, w);
+            ridges.add(keep, w);
+        }
+        ++contractions;
+    }
+    renumber_fields(fields, compact(mesh));
+    return contractions;
+}
+
+} // namespace sfa

@@ -1,0 +1,32 @@
+// The ridge edges of a mesh whose connectivity is changing (splits, contractions), as
+// vertex pairs: half-edge flags would have to follow every renumbered half-edge.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <unordered_set>
+#include <vector>
+
+namespace sfa {
+
+class RidgeSet {
+public:
+    explicit RidgeSet(const std::vector<std::array<int32_t, 2>> &edges)
+    {
+        for (const auto &e : edges)
+            add(e[0], e[1]);
+    }
+    bool contains(int32_t a, int32_t b) const { return keys_.count(key(a, b)) != 0; }
+    void add(int32_t a, int32_t b) { keys_.insert(key(a, b)); }
+    void remove(int32_t a, int32_t b) { keys_.erase(key(a, b)); }
+
+private:
+    static uint64_t key(int32_t a, int32_t b)
+    {
+        const uint32_t lo = static_cast<uint32_t>(a < b ? a : b), hi = static_cast<uint32_t>(a < b ? b : a);
+        return uint64_t(lo) << 32 | hi;
+    }
+    std::unordered_set<uint64_t> keys_;
+};
+
+} // namespace sfa

@@ -1,0 +1,125 @@
+#include "adapt/split.hpp"
+
+#include "adapt/ridge_set.hpp"
+#include "fields/transfer.hpp"
+#include "geometry/edge_neighbourhood.hpp"
+#include "geometry/quadric_error.hpp"
+#include "mesh/edge_split.hpp"
+
+#include <algorithm>
+#include <tuple>
+
+namespace sfa {
+namespace {
+
+bool wants_split(const EdgeNeighbourhood &n, const RepairSettings &settings)
+{
+    const bool absolutely_long = n.length >= n.longest && n.length > settings.split_length;
+    const double largest_angle = std::max(n.opposite_angle[0], n.triangles > 1 ? n.opposite_angle[1] : 0.0);
+    const bool relatively_long = n.length > settings.desired_length && largest_angle > settings.large_angle &&
+                                 n.shortest >= settings.split_shortest;
+    return absolutely_long || relatively_long;
+}
+
+// The edge's one or two triangles.
+template <class Fn>
+void for_each_edge_face(const TriMesh &mesh, int32_t h, Fn &&fn)
+{
+    fn(TriMesh::face(h));
+    if (mesh.opp[h] >= 0)
+        fn(TriMesh::face(mesh.opp[h]));
+}
+
+// True if putting the new vertex at x turns no part of the edge's triangles over: each
+// half of triangle (a, b, p) keeps the triangle's orientation.
+bool halves_keep_orientation(const TriMesh &mesh, int32_t h, const Vec3 &x)
+{
+    bool ok = true;
+    for_each_edge_face(mesh, h, [&](int32_t f) {
+        const Triangle &t = mesh.tri[f];
+        const Vec3 &p0 = mesh.pos[t[0]], &p1 = mesh.pos[t[1]], &p2 = mesh.pos[t[2]];
+        const Vec3 normal = (p1 - p0).cross(p2 - p0);
+        // The edge's ends are two of the corners; x replaces each of them in turn.
+        for (int k = 0; k < 3; ++k) {
+            if (t[k] != mesh.tail(h) && t[k] != mesh.head(h))
+                continue;
+            Vec3 q[3] = {p0, p1, p2};
+            q[k] = x;
+            ok = ok && (q[1] - q[0]).cross(q[2] - q[0]).dot(normal) > 0;
+        }
+    });
+    return ok;
+}
+
+// §4.1: the centre, moved along the normal to the quadric error minimum of the faces
+// around both ends; the centre itself on a ridge or boundary edge, or where the move would
+// fold a half of the edge's triangles.
+Vec3 new_vertex_position(const TriMesh &mesh, int32_t h, bool on_ridge)
+{
+    const int32_t a = mesh.tail(h), b = mesh.head(h);
+    const Vec3 centre = (mesh.pos[a] + mesh.pos[b]) / 2;
+    if (on_ridge)
+        return centre;
+    Vec3 normal = Vec3::Zero();
+    for_each_edge_face(mesh, h, [&](int32_t f) {
+        const Triangle &t = mesh.tri[f];
+        normal += (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]);
+    });
+    const Vec3 placed = quadric_error_minimum_along(
+        mesh,
+        [&](auto &&visit) {
+            for (int32_t end : {a, b})
+                mesh.for_each_outgoing(end, [&](int32_t g) { visit(TriMesh::face(g)); });
+        },
+        centre, normal.normalized());
+    return halves_keep_orientation(mesh, h, placed) ? placed : centre;
+}
+
+struct Candidate {
+    double length;
+    int32_t a, b;
+};
+
+} // namespace
+
+int32_t splitting_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const RepairSettings &settings,
+                       std::vector<VertexField> &fields)
+{
+    RidgeSet ridges(analysis.features.ridge_edges);
+    std::vector<Candidate> candidates;
+    for (int32_t h = 0; h < 3 * mesh.num_triangles(); ++h) {
+        if (mesh.opp[h] >= 0 && mesh.opp[h] < h)
+            continue; // each edge once
+        const EdgeNeighbourhood n = edge_neighbourhood(mesh, h);
+        if (wants_split(n, settings))
+            candidates.push_back({n.length, mesh.tail(h), mesh.head(h)});
+    }
+    // Longest first (§4.1); ties in vertex order, so the result never depends on the order
+    // the candidates were found in.
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate &x, const Candidate &y) {
+        return std::tie(y.length, x.a, x.b) < std::tie(x.length, y.a, y.b);
+    });
+
+    int32_t splits = 0;
+    for (const Candidate &c : candidates) {
+        int32_t h = mesh.halfedge(c.a, c.b);
+        if (h < 0)
+            h = mesh.halfedge(c.b, c.a); // a boundary edge has one direction only
+        if (h < 0 || !wants_split(edge_neighbourhood(mesh, h), settings))
+            continue;
+        const bool on_ridge = ridges.contains(c.a, c.b) || mesh.opp[h] < 0;
+        const Vec3 position = new_vertex_position(mesh, h, on_ridge);
+        const Stencil stencil = stencil_over(mesh, position, [&](auto &&visit) { for_each_edge_face(mesh, h, visit); });
+        const int32_t m = split_edge(mesh, h, position);
+        append_interpolated(fields, stencil);
+        if (on_ridge) {
+            ridges.remove(c.a, c.b);
+            ridges.add(c.a, m);
+            ridges.add(m, c.b);
+        }
+        ++splits;
+    }
+    return splits;
+}
+
+} // namespace sfa

@@ -1,0 +1,22 @@
+// Anisotropy-aware edge splitting (paper §4.1).
+#pragma once
+
+#include "adapt/repair_settings.hpp"
+#include "fields/vertex_fields.hpp"
+#include "geometry/analysis.hpp"
+
+#include <vector>
+
+namespace sfa {
+
+// One pass: every edge that is absolutely long (the longest of its triangles and longer
+// than L) or relatively long (longer than l, opposite an angle above theta_l, and no edge
+// of its triangles shorter than s) is split, longest first, if it still is when its turn
+// comes. The new vertex goes to the edge's centre, then along the normal to the quadric
+// error minimum of the faces around the edge's ends; a ridge or boundary edge keeps it at
+// the centre, on the ridge line. Fields get the values interpolated there. Returns the
+// number of splits; the mesh stays dense (vertices and triangles are appended).
+int32_t splitting_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const RepairSettings &settings,
+                       std::vector<VertexField> &fields);
+
+} // namespace sfa

@@ -1,0 +1,32 @@
+// The quadric error metric of Garland and Heckbert, used to place a new or merged vertex
+// (§4.1, §4.2): the sum over nearby faces of area * (squared distance to the face's plane).
+#pragma once
+
+#include "mesh/tri_mesh.hpp"
+
+namespace sfa {
+
+// The point x + t * direction minimizing the quadric error of the faces that for_each_face
+// visits (it calls its argument with each face index). A smooth surface's new vertex, put
+// on a chord, moves this way back towards the surface the faces around it describe.
+template <class ForEachFace>
+Vec3 quadric_error_minimum_along(const TriMesh &mesh, ForEachFace &&for_each_face, const Vec3 &x, const Vec3 &direction)
+{
+    // error(t) = sum area (n.(x + t d - c))^2 with n the unit normal and c a corner:
+    // minimal at t = -sum area (n.d)(n.(x - c)) / sum area (n.d)^2.
+    double numerator = 0, denominator = 0;
+    for_each_face([&](int32_t f) {
+        const Triangle &c = mesh.tri[f];
+        const Vec3 twice_area = (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]);
+        const double norm = twice_area.norm();
+        if (norm == 0)
+            return;
+        const Vec3 n = twice_area / norm;
+        const double along = n.dot(direction);
+        numerator += norm * along * n.dot(x - mesh.pos[c[0]]);
+        denominator += norm * along * along;
+    });
+    return denominator > 0 ? Vec3(x - numerator / denominator * direction) : x;
+}
+
+} // namespace sfa
