@@ -3,7 +3,9 @@
 #include "adapt/contract.hpp"
 #include "adapt/smooth.hpp"
 #include "adapt/split.hpp"
+#include "adapt/volume.hpp"
 #include "fields/transfer.hpp"
+#include "geometry/measures.hpp"
 
 namespace sfa {
 
@@ -11,6 +13,10 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
 {
     AdaptCounts counts;
     const auto analysis = [&] { return analyze_surface(mesh, settings.features, settings.metric); };
+    bool closed = true;
+    for (int32_t twin : mesh.opp)
+        closed = closed && twin >= 0;
+    const double volume = enclosed_volume(mesh);
     while (counts.passes < settings.max_passes) {
         ++counts.passes;
         // Repair first (§4): the density the desired edge length asks for, and no extreme
@@ -29,6 +35,8 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
         if (splits + contractions + flips == 0)
             break;
     }
+    if (closed)
+        restore_enclosed_volume(mesh, analysis().features.rank, volume);
     return counts;
 }
 

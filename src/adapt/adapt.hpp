@@ -24,8 +24,9 @@ struct AdaptCounts {
 };
 
 // Each pass: split, contract, flip, then smooth, every step after a fresh analysis of the
-// mesh as it then is; until a pass changes no connectivity or max_passes were made. The
-// fields (one value set per vertex) follow every step. The mesh stays dense and valid.
+// mesh as it then is; until a pass changes no connectivity or max_passes were made. A
+// closed surface then gets its enclosed volume back (restore_enclosed_volume). The fields
+// (one value set per vertex) follow every step. The mesh stays dense and valid.
 AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings);
 
 } // namespace sfa

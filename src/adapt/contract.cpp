@@ -20,18 +20,18 @@ const double cos_max_face_turn = 0.5; // 60 degrees
 // of about 0.06 degrees): it would spoil every normal computed from it.
 constexpr double min_height_ratio = 1e-3;
 
-// The physical and metric (eq. 4) lengths of the edges of h's triangles.
-struct EdgeLengths {
+// The metric (eq. 4) length of h's edge and the longest of its triangles' edges.
+struct MetricLengths {
     double metric_length, metric_longest;
 };
 
-EdgeLengths metric_lengths(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h)
+MetricLengths metric_lengths(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h)
 {
     const auto length = [&](int32_t p, int32_t q) {
         return metric_edge_length(mesh.pos[p], analysis.metric[p], mesh.pos[q], analysis.metric[q]);
     };
     const int32_t a = mesh.tail(h), b = mesh.head(h);
-    EdgeLengths out{length(a, b), length(a, b)};
+    MetricLengths out{length(a, b), length(a, b)};
     for (int32_t side : {h, mesh.opp[h]}) {
         if (side < 0)
             continue;
@@ -52,7 +52,7 @@ bool wants_contraction(const TriMesh &mesh, const SurfaceAnalysis &analysis, int
     if (n.longest < s.contract_length && n.length <= n.shortest)
         return true; // absolute small triangle
     if (n.longest < s.desired_length && n.length < s.contract_small_ratio * n.longest) {
-        const EdgeLengths metric = metric_lengths(mesh, analysis, h); // relative small triangle,
+        const MetricLengths metric = metric_lengths(mesh, analysis, h); // relative small triangle,
         return metric.metric_length < s.contract_small_ratio * metric.metric_longest; // in both spaces
     }
     return false;

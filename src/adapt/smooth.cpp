@@ -1,5 +1,6 @@
 #include "adapt/smooth.hpp"
 
+#include "geometry/measures.hpp"
 #include "mesh/parallel.hpp"
 #include "motion/fold_time.hpp"
 
@@ -83,19 +84,6 @@ Vec3 ridge_motion(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t 
         tangent = -tangent;
     const double angle = distance / radius;
     return to_centre + std::cos(angle) * radial + std::sin(angle) * radius * tangent;
-}
-
-// The gradient of the enclosed volume with respect to one vertex: moving v alone by d
-// changes sum a.(b x c)/6 by exactly gradient.d, since each term is linear in v.
-Vec3 volume_gradient(const TriMesh &mesh, int32_t v)
-{
-    Vec3 gradient = Vec3::Zero();
-    mesh.for_each_outgoing(v, [&](int32_t h) {
-        const Triangle &t = mesh.tri[TriMesh::face(h)];
-        const int k = h % 3; // v is corner k
-        gradient += mesh.pos[t[(k + 1) % 3]].cross(mesh.pos[t[(k + 2) % 3]]);
-    });
-    return gradient / 6;
 }
 
 // Adds to the tangential motion a component along `across` (within the primary space)

@@ -21,6 +21,17 @@ double enclosed_volume(const TriMesh &mesh)
     return six_volume / 6;
 }
 
+Vec3 volume_gradient(const TriMesh &mesh, int32_t v)
+{
+    Vec3 gradient = Vec3::Zero();
+    mesh.for_each_outgoing(v, [&](int32_t h) {
+        const Triangle &t = mesh.tri[TriMesh::face(h)];
+        const int k = h % 3; // v is corner k
+        gradient += mesh.pos[t[(k + 1) % 3]].cross(mesh.pos[t[(k + 2) % 3]]);
+    });
+    return gradient / 6;
+}
+
 double surface_area(const TriMesh &mesh)
 {
     double twice_area = 0;

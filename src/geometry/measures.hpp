@@ -9,6 +9,11 @@ namespace sfa {
 // Signed volume sum over triangles of a.(b x c)/6: positive for a closed surface whose
 // normals point out; for an open surface the same sum, which depends on the origin.
 double enclosed_volume(const TriMesh &mesh);
+
+// The gradient of enclosed_volume with respect to vertex v's position: moving v alone by d
+// changes the volume by exactly gradient.d, since each term a.(b x c) is linear in v. It
+// points outward; its length is a third of the area of v's fan when the fan is flat.
+Vec3 volume_gradient(const TriMesh &mesh, int32_t v);
 double surface_area(const TriMesh &mesh);
 
 struct AngleRange {

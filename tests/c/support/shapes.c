@@ -347,6 +347,32 @@ sfa_mesh_data shape_noisy_icosphere(int k, double r, double fraction, uint64_t s
     return m;
 }
 
+sfa_mesh_data shape_jittered_icosphere(int k, double r, double fraction, uint64_t seed)
+{
+    sfa_mesh_data m = shape_icosphere(k, r);
+    const double amplitude = fraction * mesh_mean_edge_length(&m);
+    shapes_rng rng = rng_seed(seed);
+    for (int32_t v = 0; v < m.nverts; ++v) {
+        double *p = m.xyz + 3 * v, d[3], radial = 0, norm = 0, length = 0;
+        for (int i = 0; i < 3; ++i) {
+            d[i] = 2 * rng_uniform(&rng) - 1;
+            radial += d[i] * p[i] / r;
+        }
+        for (int i = 0; i < 3; ++i) {
+            d[i] -= radial * p[i] / r;
+            norm += d[i] * d[i];
+        }
+        const double step = amplitude * rng_uniform(&rng) / sqrt(norm);
+        for (int i = 0; i < 3; ++i) {
+            p[i] += step * d[i];
+            length += p[i] * p[i];
+        }
+        for (int i = 0; i < 3; ++i)
+            p[i] *= r / sqrt(length);
+    }
+    return m;
+}
+
 sfa_mesh_data mesh_copy(const sfa_mesh_data *m)
 {
     sfa_mesh_data c = mesh_alloc(m->nverts, m->ntris);

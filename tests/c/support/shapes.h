@@ -57,6 +57,11 @@ sfa_mesh_data shape_spherical_cap(double r, double max_angle, int segments, int 
  * `seed` gives the same mesh on every platform. */
 sfa_mesh_data shape_noisy_icosphere(int k, double r, double fraction, uint64_t seed);
 
+/* The icosphere of shape_icosphere(k, r) with every vertex moved along the sphere (in a
+ * random tangent direction, then back onto the sphere) by up to `fraction` of the mean
+ * edge length; the same `seed` gives the same mesh on every platform. */
+sfa_mesh_data shape_jittered_icosphere(int k, double r, double fraction, uint64_t seed);
+
 /* A small deterministic random number generator (SplitMix64), so that generated meshes
  * do not depend on the C library's rand(). */
 typedef struct shapes_rng {
