@@ -13,9 +13,7 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
 {
     AdaptCounts counts;
     const auto analysis = [&] { return analyze_surface(mesh, settings.features, settings.metric); };
-    bool closed = true;
-    for (int32_t twin : mesh.opp)
-        closed = closed && twin >= 0;
+    const bool closed = mesh.is_closed();
     const double volume = enclosed_volume(mesh);
     while (counts.passes < settings.max_passes) {
         ++counts.passes;

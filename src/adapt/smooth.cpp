@@ -1,6 +1,6 @@
 #include "adapt/smooth.hpp"
 
-#include "geometry/measures.hpp"
+#include "geometry/local_fit.hpp"
 #include "mesh/parallel.hpp"
 #include "motion/fold_time.hpp"
 
@@ -86,17 +86,6 @@ Vec3 ridge_motion(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t 
     return to_centre + std::cos(angle) * radial + std::sin(angle) * radius * tangent;
 }
 
-// Adds to the tangential motion a component along `across` (within the primary space)
-// that cancels its first-order volume change, in the spirit of Jiao's volume-conserving
-// smoothing (the paper's reference [22]).
-Vec3 volume_corrected(const Vec3 &motion, const Vec3 &gradient, const Vec3 &across)
-{
-    const double rate = gradient.dot(across);
-    if (std::abs(rate) <= 1e-12 * gradient.norm() * across.norm())
-        return motion;
-    return motion - gradient.dot(motion) / rate * across;
-}
-
 } // namespace
 
 std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &analysis)
@@ -109,11 +98,9 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
         if (rank == 2)
             continue; // corners never move
         if (rank == 0) {
-            motion[v] = volume_corrected(tangent_target(mesh, analysis, v), volume_gradient(mesh, v),
-                                         analysis.metric[v].normal);
+            const Vec3 target = mesh.pos[v] + tangent_target(mesh, analysis, v);
+            motion[v] = onto_fitted_surface(mesh, v, analysis.metric[v], target) - mesh.pos[v];
         } else {
-            // No volume correction: it would move the vertex off its ridge. Along a straight
-            // ridge the motion changes no volume; along a curved one, a second-order amount.
             motion[v] = ridge_motion(mesh, analysis, v);
         }
     }

@@ -3,7 +3,9 @@
 
 #include "adapt/adapt.hpp"
 #include "adapt/smooth.hpp"
+#include "adapt/volume.hpp"
 #include "fields/transfer.hpp"
+#include "geometry/measures.hpp"
 #include "mesh/invariants.hpp"
 
 #include <string>
@@ -29,10 +31,14 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
         // Work on a copy of the positions and fields; commit only when every sweep succeeded.
         TriMesh mesh = s->mesh;
         std::vector<VertexField> fields = s->fields;
+        const double volume = enclosed_volume(mesh);
         for (int32_t sweep = 0; sweep < iterations; ++sweep) {
-            std::vector<Vec3> moved = smoothing_sweep(mesh, current_analysis(s, mesh));
+            const SurfaceAnalysis analysis = current_analysis(s, mesh);
+            std::vector<Vec3> moved = smoothing_sweep(mesh, analysis);
             fields = fields_at_moved_vertices(mesh, moved, fields);
             mesh.pos.swap(moved);
+            if (mesh.is_closed())
+                restore_enclosed_volume(mesh, analysis.features.rank, volume);
         }
         s->mesh.pos.swap(mesh.pos);
         s->fields.swap(fields);

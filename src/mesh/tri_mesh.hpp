@@ -33,6 +33,13 @@ struct TriMesh {
     int32_t head(int32_t h) const { return tri[h / 3][(h + 1) % 3]; }
     bool is_boundary_halfedge(int32_t h) const { return opp[h] < 0; }
     bool is_boundary_vertex(int32_t v) const { return opp[v2h[v]] < 0; }
+    // No boundary: every half-edge has its twin.
+    bool is_closed() const {
+        for (int32_t twin : opp)
+            if (twin < 0)
+                return false;
+        return true;
+    }
 
     // The next half-edge leaving the same vertex, counter-clockwise; -1 past a boundary.
     int32_t rotate_ccw(int32_t h) const { return opp[prev(h)]; }

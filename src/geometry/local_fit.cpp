@@ -1,0 +1,48 @@
+#include "geometry/local_fit.hpp"
+
+#include <cmath>
+
+namespace sfa {
+
+Vec3 onto_fitted_surface(const TriMesh &mesh, int32_t v, const VertexMetric &frame, const Vec3 &target)
+{
+    const Vec3 &p = mesh.pos[v];
+    // Normal equations of the fit, scaled by the squared mean edge length so that their
+    // conditioning does not depend on the mesh's size.
+    using Vector5 = Eigen::Matrix<double, 5, 1>;
+    using Matrix5 = Eigen::Matrix<double, 5, 5>;
+    Matrix5 normal_matrix = Matrix5::Zero();
+    Vector5 right_side = Vector5::Zero();
+    double scale2 = 0;
+    int count = 0;
+    mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
+        scale2 += (mesh.pos[w] - p).squaredNorm();
+        ++count;
+    });
+    if (count < 5 || scale2 == 0)
+        return target;
+    const double scale = std::sqrt(scale2);
+    scale2 /= count;
+    mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
+        const Vec3 d = mesh.pos[w] - p;
+        const double u = d.dot(frame.major), s = d.dot(frame.minor), h = d.dot(frame.normal);
+        Vector5 basis;
+        basis << u * u / scale2, u * s / scale2, s * s / scale2, u / scale, s / scale;
+        normal_matrix += basis * basis.transpose();
+        right_side += basis * h;
+    });
+    const Eigen::LDLT<Matrix5> solver(normal_matrix);
+    // Neighbours on two lines through v (or fewer directions) cannot fix three
+    // coefficients: keep to the tangent plane.
+    if (solver.info() != Eigen::Success || !(solver.rcond() > 1e-8))
+        return target;
+    const Vector5 coefficients = solver.solve(right_side);
+    const Vec3 d = target - p;
+    const double u = d.dot(frame.major), s = d.dot(frame.minor);
+    Vector5 at_target;
+    at_target << u * u / scale2, u * s / scale2, s * s / scale2, u / scale, s / scale;
+    const double height = coefficients.dot(at_target);
+    return p + u * frame.major + s * frame.minor + height * frame.normal;
+}
+
+} // namespace sfa
