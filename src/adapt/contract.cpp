@@ -2,6 +2,7 @@
 
 #include "adapt/ridge_set.hpp"
 #include "fields/transfer.hpp"
+#include "geometry/circle.hpp"
 #include "geometry/edge_neighbourhood.hpp"
 #include "geometry/quadric_error.hpp"
 #include "mesh/compact.hpp"
@@ -111,9 +112,12 @@ bool merged_position(const TriMesh &mesh, int32_t h, const std::vector<int8_t> &
         merged = mesh.pos[ra > rb ? a : b]; // the feature vertex stays where it is
         return true;
     }
+    if (ra > 0) { // on the ridge curve
+        merged = curve_midpoint(ridges.next_along(mesh, rank, a, b), mesh.pos[a], mesh.pos[b],
+                                ridges.next_along(mesh, rank, b, a));
+        return true;
+    }
     merged = (mesh.pos[a] + mesh.pos[b]) / 2;
-    if (ra > 0)
-        return true; // on the ridge line
     Vec3 normal = Vec3::Zero();
     for_each_face_around(mesh, h, [&](int32_t f) {
         const Triangle &t = mesh.tri[f];

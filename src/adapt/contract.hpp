@@ -12,9 +12,9 @@ namespace sfa {
 // One pass: every edge meeting one of the four criteria of §4.2 (absolute small angle,
 // relative shortness, absolute small triangle, relative small triangle in physical and
 // metric space) is contracted, shortest first, if it still meets one when its turn comes.
-// The merged vertex takes the place of the end with the higher feature rank; ends of equal
-// rank merge at their midpoint, moved along the normal to the quadric error minimum where
-// both are smooth. Refused: two corners, two feature vertices not joined by a ridge edge
+// The merged vertex takes the place of the end with the higher feature rank; two ridge
+// vertices merge at the midpoint of their ridge curve (geometry/circle.hpp), two smooth
+// ones at their midpoint moved along the normal to the quadric error minimum. Refused: two corners, two feature vertices not joined by a ridge edge
 // (that would merge two ridge curves), anything the link condition forbids, and any result
 // that turns a face by more than 60 degrees or nearly flattens it. Fields are interpolated
 // at the merged vertex. Ends with compaction (the mesh and fields are dense again).

@@ -2,6 +2,8 @@
 // vertex pairs: half-edge flags would have to follow every renumbered half-edge.
 #pragma once
 
+#include "mesh/tri_mesh.hpp"
+
 #include <array>
 #include <cstdint>
 #include <unordered_set>
@@ -19,6 +21,20 @@ public:
     bool contains(int32_t a, int32_t b) const { return keys_.count(key(a, b)) != 0; }
     void add(int32_t a, int32_t b) { keys_.insert(key(a, b)); }
     void remove(int32_t a, int32_t b) { keys_.erase(key(a, b)); }
+
+    // The position of v's ridge neighbour other than `not_this`, or nullptr if v is not a
+    // ridge vertex (rank 1: exactly two ridge neighbours) or has none.
+    const Vec3 *next_along(const TriMesh &mesh, const std::vector<int8_t> &rank, int32_t v, int32_t not_this) const
+    {
+        if (rank[v] != 1)
+            return nullptr;
+        const Vec3 *found = nullptr;
+        mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
+            if (w != not_this && contains(v, w))
+                found = &mesh.pos[w];
+        });
+        return found;
+    }
 
 private:
     static uint64_t key(int32_t a, int32_t b)

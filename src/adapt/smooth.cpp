@@ -1,5 +1,6 @@
 #include "adapt/smooth.hpp"
 
+#include "geometry/circle.hpp"
 #include "geometry/local_fit.hpp"
 #include "mesh/parallel.hpp"
 #include "motion/fold_time.hpp"
@@ -69,21 +70,10 @@ Vec3 ridge_motion(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t 
     }
     const double distance = sum_moment / sum_weight;
 
-    // The circle through p and the two ends has its centre at p + to_centre, with
-    // to_centre = (|u|^2 w x n + |w|^2 n x u) / (2 |n|^2), n = u x w, for u, w the ends
-    // relative to p. The motion ends on that circle, `distance` along it.
-    const Vec3 u = mesh.pos[ends[0]] - p, w = mesh.pos[ends[1]] - p, n = u.cross(w);
-    const double scale2 = u.squaredNorm() * w.squaredNorm();
-    if (n.squaredNorm() <= 1e-24 * scale2) // straight (to round-off): the chord is the ridge
-        return distance * direction;
-    const Vec3 to_centre = (u.squaredNorm() * w.cross(n) + w.squaredNorm() * n.cross(u)) / (2 * n.squaredNorm());
-    const Vec3 radial = -to_centre; // from the centre to p
-    const double radius = radial.norm();
-    Vec3 tangent = n.normalized().cross(radial / radius);
-    if (tangent.dot(direction) < 0)
-        tangent = -tangent;
-    const double angle = distance / radius;
-    return to_centre + std::cos(angle) * radial + std::sin(angle) * radius * tangent;
+    Circle circle;
+    if (!circle_through(mesh.pos[ends[0]], p, mesh.pos[ends[1]], circle))
+        return distance * direction; // a straight ridge: the chord is the ridge
+    return along_circle(circle, p, direction, distance) - p;
 }
 
 } // namespace

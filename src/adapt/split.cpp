@@ -2,6 +2,7 @@
 
 #include "adapt/ridge_set.hpp"
 #include "fields/transfer.hpp"
+#include "geometry/circle.hpp"
 #include "geometry/edge_neighbourhood.hpp"
 #include "geometry/quadric_error.hpp"
 #include "mesh/edge_split.hpp"
@@ -52,14 +53,18 @@ bool halves_keep_orientation(const TriMesh &mesh, int32_t h, const Vec3 &x)
 }
 
 // §4.1: the centre, moved along the normal to the quadric error minimum of the faces
-// around both ends; the centre itself on a ridge or boundary edge, or where the move would
-// fold a half of the edge's triangles.
-Vec3 new_vertex_position(const TriMesh &mesh, int32_t h, bool on_ridge)
+// around both ends; on a ridge or boundary edge, the midpoint of the curve through the
+// ridge neighbours (the centre where the ridge is straight); the centre itself where a
+// move would fold a half of the edge's triangles.
+Vec3 new_vertex_position(const TriMesh &mesh, int32_t h, const RidgeSet *ridge, const std::vector<int8_t> &rank)
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
     const Vec3 centre = (mesh.pos[a] + mesh.pos[b]) / 2;
-    if (on_ridge)
-        return centre;
+    if (ridge) {
+        const Vec3 on_curve =
+            curve_midpoint(ridge->next_along(mesh, rank, a, b), mesh.pos[a], mesh.pos[b], ridge->next_along(mesh, rank, b, a));
+        return halves_keep_orientation(mesh, h, on_curve) ? on_curve : centre;
+    }
     Vec3 normal = Vec3::Zero();
     for_each_edge_face(mesh, h, [&](int32_t f) {
         const Triangle &t = mesh.tri[f];
@@ -86,6 +91,7 @@ int32_t splitting_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const Rep
                        std::vector<VertexField> &fields)
 {
     RidgeSet ridges(analysis.features.ridge_edges);
+    std::vector<int8_t> rank = analysis.features.rank;
     std::vector<Candidate> candidates;
     for (int32_t h = 0; h < 3 * mesh.num_triangles(); ++h) {
         if (mesh.opp[h] >= 0 && mesh.opp[h] < h)
@@ -108,10 +114,11 @@ int32_t splitting_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const Rep
         if (h < 0 || !wants_split(edge_neighbourhood(mesh, h), settings))
             continue;
         const bool on_ridge = ridges.contains(c.a, c.b) || mesh.opp[h] < 0;
-        const Vec3 position = new_vertex_position(mesh, h, on_ridge);
+        const Vec3 position = new_vertex_position(mesh, h, on_ridge ? &ridges : nullptr, rank);
         const Stencil stencil = stencil_over(mesh, position, [&](auto &&visit) { for_each_edge_face(mesh, h, visit); });
         const int32_t m = split_edge(mesh, h, position);
         append_interpolated(fields, stencil);
+        rank.push_back(on_ridge ? 1 : 0);
         if (on_ridge) {
             ridges.remove(c.a, c.b);
             ridges.add(c.a, m);

@@ -13,8 +13,8 @@ namespace sfa {
 // than L) or relatively long (longer than l, opposite an angle above theta_l, and no edge
 // of its triangles shorter than s) is split, longest first, if it still is when its turn
 // comes. The new vertex goes to the edge's centre, then along the normal to the quadric
-// error minimum of the faces around the edge's ends; a ridge or boundary edge keeps it at
-// the centre, on the ridge line. Fields get the values interpolated there. Returns the
+// error minimum of the faces around the edge's ends; on a ridge or boundary edge it goes
+// to the midpoint of the curve through the ridge neighbours (the centre of a straight one). Fields get the values interpolated there. Returns the
 // number of splits; the mesh stays dense (vertices and triangles are appended).
 int32_t splitting_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const RepairSettings &settings,
                        std::vector<VertexField> &fields);

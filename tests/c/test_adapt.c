@@ -104,10 +104,127 @@ static void box_refined_keeps_corners_faces_volume_and_linear_fields(void **stat
     sfa_destroy(s);
 }
 
+/* A closed unit sphere jittered along itself, adapted at its own mean edge length: its
+ * angles improve to over 20 degrees and its volume stays within 0.2 %. */
+static void sphere_at_its_own_edge_length_gets_good_angles_and_keeps_volume(void **state)
+{
+    (void)state;
+    sfa_mesh_data m = shape_jittered_icosphere(4, 1.0, 1.0 / 3, 7);
+    sfa_surface *s = surface_of(&m);
+    const double volume = measure(s, SFA_MEASURE_VOLUME), min_angle = measure(s, SFA_MEASURE_MIN_ANGLE);
+    assert_ok(s, sfa_adapt(s));
+    int32_t nverts, ntris;
+    assert_int_equal(sfa_get_counts(s, &nverts, &ntris), SFA_OK);
+    const double change = measure(s, SFA_MEASURE_VOLUME) / volume - 1;
+    print_message("sphere: %d -> %d vertices, min angle %.2f -> %.2f, max angle %.2f, volume change %.2e\n", m.nverts,
+                  nverts, min_angle, measure(s, SFA_MEASURE_MIN_ANGLE), measure(s, SFA_MEASURE_MAX_ANGLE), change);
+    assert_true(measure(s, SFA_MEASURE_MIN_ANGLE) > 20);
+    assert_true(fabs(change) < 2e-3);
+    mesh_free(&m);
+    sfa_destroy(s);
+}
+
+/* The distance from a mesh to an exact surface, sampled at every triangle's centroid and
+ * edge midpoints (where chords are farthest from a curved surface). */
+typedef double (*exact_distance_fn)(const double p[3]);
+
+typedef struct {
+    int32_t vertices;
+    double mean, max;
+} surface_error;
+
+static surface_error error_against(const sfa_surface *s, exact_distance_fn distance)
+{
+    sfa_mesh_data m = read_back(s);
+    surface_error e = {m.nverts, 0, 0};
+    for (int32_t t = 0; t < m.ntris; ++t)
+        for (int k = 0; k < 4; ++k) {
+            double p[3] = {0, 0, 0};
+            for (int i = 0; i < 3; ++i) {
+                const double *q = m.xyz + 3 * m.tris[3 * t + i];
+                const double w = k == 3 ? 1.0 / 3 : (i == k || i == (k + 1) % 3) ? 0.5 : 0;
+                for (int j = 0; j < 3; ++j)
+                    p[j] += w * q[j];
+            }
+            const double d = distance(p);
+            e.mean += d;
+            e.max = fmax(e.max, d);
+        }
+    e.mean /= 4.0 * m.ntris;
+    mesh_free(&m);
+    return e;
+}
+
+/* The ellipsoid x^2 + (y/0.6)^2 + (z/0.3)^2 = 1: first-order distance |F| / |grad F|. */
+static double ellipsoid_distance(const double p[3])
+{
+    const double a2 = 1, b2 = 0.36, c2 = 0.09;
+    const double f = p[0] * p[0] / a2 + p[1] * p[1] / b2 + p[2] * p[2] / c2 - 1;
+    const double g[3] = {2 * p[0] / a2, 2 * p[1] / b2, 2 * p[2] / c2};
+    return fabs(f) / sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+}
+
+/* The open tube of radius 0.5 about the z axis. */
+static double tube_distance(const double p[3]) { return fabs(sqrt(p[0] * p[0] + p[1] * p[1]) - 0.5); }
+
+static surface_error adapted_error(const sfa_mesh_data *m, int anisotropic, double edge_length,
+                                   exact_distance_fn distance)
+{
+    sfa_surface *s = surface_of(m);
+    assert_int_equal(sfa_set_param(s, SFA_PARAM_ANISOTROPIC, anisotropic), SFA_OK);
+    assert_int_equal(sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, edge_length), SFA_OK);
+    for (int call = 0; call < 3; ++call)
+        assert_ok(s, sfa_adapt(s));
+    const surface_error e = error_against(s, distance);
+    sfa_destroy(s);
+    return e;
+}
+
+/* Anisotropic at edge length l, then isotropic at an edge length chosen so that it gets
+ * at least as many vertices. Measured so far (see the closing note of the adaptation
+ * work): the anisotropic mesh is clearly closer in one of the two distances (ellipsoid:
+ * max 23 % smaller; tube: mean 10 % smaller) and within 3 % in the other. What this test
+ * holds the code to is that weaker statement: never more than 5 % farther in either. */
+static void compare_at_equal_vertex_count(const char *name, const sfa_mesh_data *m, double l, exact_distance_fn distance)
+{
+    const surface_error anisotropic = adapted_error(m, 1, l, distance);
+    double iso_l = l;
+    surface_error isotropic = adapted_error(m, 0, iso_l, distance);
+    /* The vertex count goes as 1 / l^2 */
+    for (int attempt = 0; attempt < 4 && isotropic.vertices < anisotropic.vertices; ++attempt) {
+        iso_l *= 0.99 * sqrt((double)isotropic.vertices / anisotropic.vertices);
+        isotropic = adapted_error(m, 0, iso_l, distance);
+    }
+    print_message("%s: anisotropic (l = %.3f) %d vertices, mean distance %.3e, max %.3e; isotropic (l = %.3f) %d "
+                  "vertices, mean distance %.3e, max %.3e\n",
+                  name, l, anisotropic.vertices, anisotropic.mean, anisotropic.max, iso_l, isotropic.vertices,
+                  isotropic.mean, isotropic.max);
+    assert_true(isotropic.vertices >= anisotropic.vertices);
+    assert_true(anisotropic.mean < 1.05 * isotropic.mean);
+    assert_true(anisotropic.max < 1.05 * isotropic.max);
+    assert_true(anisotropic.mean < isotropic.mean || anisotropic.max < isotropic.max);
+}
+
+static void anisotropic_meshes_are_as_close_to_the_surface_with_as_many_vertices(void **state)
+{
+    (void)state;
+    sfa_mesh_data ellipsoid = shape_ellipsoid(5, 1, 0.6, 0.3);
+    compare_at_equal_vertex_count("ellipsoid (1, 0.6, 0.3)", &ellipsoid, 0.1, ellipsoid_distance);
+    /* The capped cylinder without its caps: the last two vertices and 2 x 96 triangles. */
+    sfa_mesh_data tube = shape_capped_cylinder(0.5, 2, 96, 61);
+    tube.nverts -= 2;
+    tube.ntris -= 2 * 96;
+    compare_at_equal_vertex_count("tube (r = 0.5, length 2)", &tube, 0.2, tube_distance);
+    mesh_free(&ellipsoid);
+    mesh_free(&tube);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(box_refined_keeps_corners_faces_volume_and_linear_fields),
+        cmocka_unit_test(sphere_at_its_own_edge_length_gets_good_angles_and_keeps_volume),
+        cmocka_unit_test(anisotropic_meshes_are_as_close_to_the_surface_with_as_many_vertices),
     };
     return cmocka_run_group_tests_name("adapt", tests, NULL, NULL);
 }
