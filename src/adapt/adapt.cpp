@@ -1,5 +1,7 @@
 #include "adapt/adapt.hpp"
 
+#include "adapt/carried_features.hpp"
+
 #include "adapt/contract.hpp"
 #include "adapt/smooth.hpp"
 #include "adapt/split.hpp"
@@ -12,15 +14,21 @@ namespace sfa {
 AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings)
 {
     AdaptCounts counts;
-    const auto analysis = [&] { return analyze_surface(mesh, settings.features, settings.metric); };
+    CarriedFeatures features(analyze_surface(mesh, settings.features, settings.metric).features);
+    // The geometry of the mesh as it now is, with the carried features.
+    const auto analysis = [&] {
+        SurfaceAnalysis a = analyze_geometry(mesh, settings.metric);
+        a.features = features.as_features(mesh);
+        return a;
+    };
     const bool closed = mesh.is_closed();
     const double volume = enclosed_volume(mesh);
     while (counts.passes < settings.max_passes) {
         ++counts.passes;
         // Repair first (§4): the density the desired edge length asks for, and no extreme
         // angles; then optimization (§3) of the repaired mesh.
-        const int32_t splits = splitting_pass(mesh, analysis(), settings.repair, fields);
-        const int32_t contractions = contraction_pass(mesh, analysis(), settings.repair, fields);
+        const int32_t splits = splitting_pass(mesh, settings.repair, features, fields);
+        const int32_t contractions = contraction_pass(mesh, analysis(), settings.repair, features, fields);
         const int32_t flips = flipping_pass(mesh, analysis(), FlipSettings{settings.metric, settings.flip_max_dihedral});
         for (int sweep = 0; sweep < settings.smoothing_sweeps; ++sweep) {
             std::vector<Vec3> moved = smoothing_sweep(mesh, analysis());
@@ -34,7 +42,7 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
             break;
     }
     if (closed)
-        restore_enclosed_volume(mesh, analysis().features.rank, volume);
+        restore_enclosed_volume(mesh, features.rank, volume);
     return counts;
 }
 

@@ -1,6 +1,5 @@
 #include "adapt/contract.hpp"
 
-#include "adapt/ridge_set.hpp"
 #include "fields/transfer.hpp"
 #include "geometry/circle.hpp"
 #include "geometry/edge_neighbourhood.hpp"
@@ -98,14 +97,13 @@ bool faces_survive(const TriMesh &mesh, int32_t h, const Vec3 &merged)
 }
 
 // Where the merged vertex goes (§4.2), or false if the contraction would spoil a feature.
-bool merged_position(const TriMesh &mesh, int32_t h, const std::vector<int8_t> &rank, const RidgeSet &ridges,
-                     Vec3 &merged, int8_t &merged_rank)
+bool merged_position(const TriMesh &mesh, int32_t h, const CarriedFeatures &features, Vec3 &merged, int8_t &merged_rank)
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
-    const int8_t ra = rank[a], rb = rank[b];
+    const int8_t ra = features.rank[a], rb = features.rank[b];
     if (ra == 2 && rb == 2)
         return false; // a corner would disappear
-    if (ra > 0 && rb > 0 && !ridges.contains(a, b))
+    if (ra > 0 && rb > 0 && !features.ridges.contains(a, b))
         return false; // two ridge curves (or a curve and a corner) would merge
     merged_rank = std::max(ra, rb);
     if (ra != rb) {
@@ -113,8 +111,7 @@ bool merged_position(const TriMesh &mesh, int32_t h, const std::vector<int8_t> &
         return true;
     }
     if (ra > 0) { // on the ridge curve
-        merged = curve_midpoint(ridges.next_along(mesh, rank, a, b), mesh.pos[a], mesh.pos[b],
-                                ridges.next_along(mesh, rank, b, a));
+        merged = curve_midpoint(features.next_along(mesh, a, b), mesh.pos[a], mesh.pos[b], features.next_along(mesh, b, a));
         return true;
     }
     merged = (mesh.pos[a] + mesh.pos[b]) / 2;
@@ -136,10 +133,9 @@ struct Candidate {
 } // namespace
 
 int32_t contraction_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const RepairSettings &settings,
-                         std::vector<VertexField> &fields)
+                         CarriedFeatures &features, std::vector<VertexField> &fields)
 {
-    RidgeSet ridges(analysis.features.ridge_edges);
-    std::vector<int8_t> rank = analysis.features.rank;
+    RidgeSet &ridges = features.ridges;
     std::vector<Candidate> candidates;
     for (int32_t h = 0; h < 3 * mesh.num_triangles(); ++h) {
         if (mesh.opp[h] >= 0 && mesh.opp[h] < h)
@@ -163,7 +159,7 @@ int32_t contraction_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const R
         Vec3 merged;
         int8_t merged_rank;
         if (h < 0 || !wants_contraction(mesh, analysis, h, settings) || !collapse_keeps_manifold(mesh, h) ||
-            !merged_position(mesh, h, rank, ridges, merged, merged_rank) || !faces_survive(mesh, h, merged))
+            !merged_position(mesh, h, features, merged, merged_rank) || !faces_survive(mesh, h, merged))
             continue;
         const Stencil stencil = stencil_over(mesh, merged, [&](auto &&visit) { for_each_face_around(mesh, h, visit); });
         const int32_t gone = mesh.tail(h), keep = mesh.head(h);
@@ -174,7 +170,7 @@ int32_t contraction_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const R
         });
         collapse_edge(mesh, h, merged);
         set_interpolated(fields, keep, stencil);
-        rank[keep] = merged_rank;
+        features.rank[keep] = merged_rank;
         ridges.remove(gone, keep);
         for (int32_t w : ridge_neighbours) {
             ridges.remove(gone, w);
@@ -182,7 +178,9 @@ int32_t contraction_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const R
         }
         ++contractions;
     }
-    renumber_fields(fields, compact(mesh));
+    const std::vector<int32_t> vertex_map = compact(mesh);
+    renumber_fields(fields, vertex_map);
+    features.renumber(vertex_map);
     return contractions;
 }
 

@@ -1,6 +1,7 @@
 // Anisotropy-aware edge contraction (paper §4.2).
 #pragma once
 
+#include "adapt/carried_features.hpp"
 #include "adapt/repair_settings.hpp"
 #include "fields/vertex_fields.hpp"
 #include "geometry/analysis.hpp"
@@ -17,9 +18,10 @@ namespace sfa {
 // ones at their midpoint moved along the normal to the quadric error minimum. Refused: two corners, two feature vertices not joined by a ridge edge
 // (that would merge two ridge curves), anything the link condition forbids, and any result
 // that turns a face by more than 60 degrees or nearly flattens it. Fields are interpolated
-// at the merged vertex. Ends with compaction (the mesh and fields are dense again).
+// at the merged vertex, and the features follow. Ends with compaction (the mesh, fields
+// and features are dense again). `analysis` gives the metric of the mesh as it was.
 // Returns the number of contractions.
 int32_t contraction_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const RepairSettings &settings,
-                         std::vector<VertexField> &fields);
+                         CarriedFeatures &features, std::vector<VertexField> &fields);
 
 } // namespace sfa

@@ -1,6 +1,5 @@
 #include "adapt/split.hpp"
 
-#include "adapt/ridge_set.hpp"
 #include "fields/transfer.hpp"
 #include "geometry/circle.hpp"
 #include "geometry/edge_neighbourhood.hpp"
@@ -56,13 +55,13 @@ bool halves_keep_orientation(const TriMesh &mesh, int32_t h, const Vec3 &x)
 // around both ends; on a ridge or boundary edge, the midpoint of the curve through the
 // ridge neighbours (the centre where the ridge is straight); the centre itself where a
 // move would fold a half of the edge's triangles.
-Vec3 new_vertex_position(const TriMesh &mesh, int32_t h, const RidgeSet *ridge, const std::vector<int8_t> &rank)
+Vec3 new_vertex_position(const TriMesh &mesh, int32_t h, bool on_ridge, const CarriedFeatures &features)
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
     const Vec3 centre = (mesh.pos[a] + mesh.pos[b]) / 2;
-    if (ridge) {
+    if (on_ridge) {
         const Vec3 on_curve =
-            curve_midpoint(ridge->next_along(mesh, rank, a, b), mesh.pos[a], mesh.pos[b], ridge->next_along(mesh, rank, b, a));
+            curve_midpoint(features.next_along(mesh, a, b), mesh.pos[a], mesh.pos[b], features.next_along(mesh, b, a));
         return halves_keep_orientation(mesh, h, on_curve) ? on_curve : centre;
     }
     Vec3 normal = Vec3::Zero();
@@ -70,11 +69,15 @@ Vec3 new_vertex_position(const TriMesh &mesh, int32_t h, const RidgeSet *ridge, 
         const Triangle &t = mesh.tri[f];
         normal += (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]);
     });
+    // The faces around the smooth ends only (and the edge's own): a feature end's fan
+    // reaches across its crease, and fitting both sides would round the crease off.
     const Vec3 placed = quadric_error_minimum_along(
         mesh,
         [&](auto &&visit) {
+            for_each_edge_face(mesh, h, visit);
             for (int32_t end : {a, b})
-                mesh.for_each_outgoing(end, [&](int32_t g) { visit(TriMesh::face(g)); });
+                if (features.rank[end] == 0)
+                    mesh.for_each_outgoing(end, [&](int32_t g) { visit(TriMesh::face(g)); });
         },
         centre, normal.normalized());
     return halves_keep_orientation(mesh, h, placed) ? placed : centre;
@@ -87,11 +90,9 @@ struct Candidate {
 
 } // namespace
 
-int32_t splitting_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const RepairSettings &settings,
+int32_t splitting_pass(TriMesh &mesh, const RepairSettings &settings, CarriedFeatures &features,
                        std::vector<VertexField> &fields)
 {
-    RidgeSet ridges(analysis.features.ridge_edges);
-    std::vector<int8_t> rank = analysis.features.rank;
     std::vector<Candidate> candidates;
     for (int32_t h = 0; h < 3 * mesh.num_triangles(); ++h) {
         if (mesh.opp[h] >= 0 && mesh.opp[h] < h)
@@ -113,16 +114,16 @@ int32_t splitting_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const Rep
             h = mesh.halfedge(c.b, c.a); // a boundary edge has one direction only
         if (h < 0 || !wants_split(edge_neighbourhood(mesh, h), settings))
             continue;
-        const bool on_ridge = ridges.contains(c.a, c.b) || mesh.opp[h] < 0;
-        const Vec3 position = new_vertex_position(mesh, h, on_ridge ? &ridges : nullptr, rank);
+        const bool on_ridge = features.ridges.contains(c.a, c.b) || mesh.opp[h] < 0;
+        const Vec3 position = new_vertex_position(mesh, h, on_ridge, features);
         const Stencil stencil = stencil_over(mesh, position, [&](auto &&visit) { for_each_edge_face(mesh, h, visit); });
         const int32_t m = split_edge(mesh, h, position);
         append_interpolated(fields, stencil);
-        rank.push_back(on_ridge ? 1 : 0);
+        features.rank.push_back(on_ridge ? 1 : 0);
         if (on_ridge) {
-            ridges.remove(c.a, c.b);
-            ridges.add(c.a, m);
-            ridges.add(m, c.b);
+            features.ridges.remove(c.a, c.b);
+            features.ridges.add(c.a, m);
+            features.ridges.add(m, c.b);
         }
         ++splits;
     }

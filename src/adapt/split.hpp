@@ -1,9 +1,9 @@
 // Anisotropy-aware edge splitting (paper §4.1).
 #pragma once
 
+#include "adapt/carried_features.hpp"
 #include "adapt/repair_settings.hpp"
 #include "fields/vertex_fields.hpp"
-#include "geometry/analysis.hpp"
 
 #include <vector>
 
@@ -16,7 +16,7 @@ namespace sfa {
 // error minimum of the faces around the edge's ends; on a ridge or boundary edge it goes
 // to the midpoint of the curve through the ridge neighbours (the centre of a straight one). Fields get the values interpolated there. Returns the
 // number of splits; the mesh stays dense (vertices and triangles are appended).
-int32_t splitting_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const RepairSettings &settings,
+int32_t splitting_pass(TriMesh &mesh, const RepairSettings &settings, CarriedFeatures &features,
                        std::vector<VertexField> &fields);
 
 } // namespace sfa

@@ -4,7 +4,7 @@
 
 namespace sfa {
 
-SurfaceAnalysis analyze_surface(const TriMesh &mesh, const FeatureThresholds &thresholds, const MetricBounds &bounds)
+SurfaceAnalysis analyze_geometry(const TriMesh &mesh, const MetricBounds &bounds)
 {
     SurfaceAnalysis analysis;
     const std::vector<Vec3> area_vectors = face_area_vectors(mesh);
@@ -19,7 +19,13 @@ SurfaceAnalysis analyze_surface(const TriMesh &mesh, const FeatureThresholds &th
         analysis.eigen[v] = decompose(analysis.quadric[v]);
         analysis.metric[v] = vertex_metric(analysis.eigen[v], outward, bounds);
     }
-    analysis.features = detect_features(mesh, analysis.eigen, area_vectors, thresholds);
+    return analysis;
+}
+
+SurfaceAnalysis analyze_surface(const TriMesh &mesh, const FeatureThresholds &thresholds, const MetricBounds &bounds)
+{
+    SurfaceAnalysis analysis = analyze_geometry(mesh, bounds);
+    analysis.features = detect_features(mesh, analysis.eigen, face_area_vectors(mesh), thresholds);
     return analysis;
 }
 

@@ -16,4 +16,8 @@ struct SurfaceAnalysis {
 
 SurfaceAnalysis analyze_surface(const TriMesh &mesh, const FeatureThresholds &thresholds, const MetricBounds &bounds);
 
+// The same without feature detection (features left empty), for callers that carry
+// features of their own.
+SurfaceAnalysis analyze_geometry(const TriMesh &mesh, const MetricBounds &bounds);
+
 } // namespace sfa

@@ -43,6 +43,8 @@ Vec3 arc_midpoint(const Vec3 *third, const Vec3 &a, const Vec3 &b)
 
 Vec3 curve_midpoint(const Vec3 *before, const Vec3 &a, const Vec3 &b, const Vec3 *after)
 {
+    if (!before || !after)
+        return (a + b) / 2;
     return (arc_midpoint(before, a, b) + arc_midpoint(after, a, b)) / 2;
 }
 
