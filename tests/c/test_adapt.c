@@ -3,6 +3,8 @@
 #include "support/surface_distance.h"
 #include "support/testing.h"
 
+#include <threads.h>
+
 #ifndef SFA_NO_ALLOC_HOOK
 #include "alloc_hook/alloc_hook.h"
 #endif
@@ -385,6 +387,142 @@ static void spot_keeps_its_volume_and_triangle_quality(void **state)
     }
 }
 
+/* Out of memory at any allocation inside sfa_adapt: the surface and its fields are as
+ * before. Then, allowed to finish, it carries the host's velocities to the new vertices
+ * (a uniform velocity stays exactly uniform). */
+static void nothing_lost_when_memory_runs_out(void **state)
+{
+    (void)state;
+#ifdef SFA_NO_ALLOC_HOOK
+    skip();
+#else
+    const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    sfa_mesh_data m = shape_box(1, lo, hi);
+    sfa_surface *s = surface_of(&m);
+    double *field = malloc(sizeof(double) * (size_t)m.nverts), *velocity = malloc(sizeof(double) * 3 * (size_t)m.nverts);
+    for (int32_t v = 0; v < m.nverts; ++v) {
+        field[v] = m.xyz[3 * v] + 2 * m.xyz[3 * v + 2];
+        velocity[3 * v] = 0.25, velocity[3 * v + 1] = -0.5, velocity[3 * v + 2] = 1;
+    }
+    int32_t id;
+    assert_int_equal(sfa_add_field(s, 1, field, &id), SFA_OK);
+    assert_int_equal(sfa_set_velocities(s, velocity), SFA_OK);
+    assert_int_equal(sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, 0.4), SFA_OK);
+    int rc = SFA_ERR_MEMORY;
+    long n = 0;
+    for (; rc == SFA_ERR_MEMORY && n < 1000000; ++n) {
+        snapshot before, after;
+        snapshot_take(s, &before);
+        sfa_test_fail_allocation_after(n);
+        rc = sfa_adapt(s);
+        sfa_test_fail_allocation_after(-1);
+        if (rc == SFA_ERR_MEMORY) {
+            assert_true(contains_phrase(sfa_last_error(s), "out of memory"));
+            snapshot_take(s, &after);
+            assert_same_snapshot(&before, &after);
+            snapshot_free(&after);
+        }
+        snapshot_free(&before);
+    }
+    print_message("sfa_adapt succeeded once %ld allocations were allowed\n", n - 1);
+    assert_int_equal(rc, SFA_OK);
+    sfa_mesh_data adapted = read_back(s);
+    assert_true(adapted.nverts > m.nverts);
+    double dt_taken;
+    assert_int_equal(sfa_move(s, 0.5, &dt_taken), SFA_OK);
+    assert_true(dt_taken == 0.5);
+    sfa_mesh_data moved = read_back(s);
+    const double step[3] = {0.125, -0.25, 0.5};
+    for (int32_t i = 0; i < 3 * adapted.nverts; ++i)
+        assert_true(fabs(moved.xyz[i] - (adapted.xyz[i] + step[i % 3])) <= 1e-15);
+    mesh_free(&moved);
+    mesh_free(&adapted);
+    free(field);
+    free(velocity);
+    mesh_free(&m);
+    sfa_destroy(s);
+#endif
+}
+
+/* One adaptation of a jittered sphere refined to 0.6 of its edge length, with a field. */
+static snapshot adapted_sphere(int threads, double radius)
+{
+    sfa_mesh_data m = shape_jittered_icosphere(3, radius, 0.3, 11);
+    sfa_surface *s = surface_of(&m);
+    double *field = malloc(sizeof(double) * (size_t)m.nverts);
+    for (int32_t v = 0; v < m.nverts; ++v)
+        field[v] = sin(3 * m.xyz[3 * v]) + m.xyz[3 * v + 1];
+    int32_t id;
+    snapshot out;
+    if (sfa_add_field(s, 1, field, &id) != SFA_OK || sfa_set_param(s, SFA_PARAM_THREADS, threads) != SFA_OK ||
+        sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, 0.6 * mesh_mean_edge_length(&m)) != SFA_OK || sfa_adapt(s) != SFA_OK ||
+        sfa_set_param(s, SFA_PARAM_THREADS, 0) != SFA_OK) {
+        memset(&out, 0, sizeof out);
+        out.counts_status = -1;
+    } else {
+        snapshot_take(s, &out);
+    }
+    free(field);
+    mesh_free(&m);
+    sfa_destroy(s);
+    return out;
+}
+
+static void expect_same(const snapshot *a, const snapshot *b, const char *what)
+{
+    char why[256];
+    if (!snapshot_equal(a, b, why, sizeof why))
+        fail_msg("%s: %s", what, why);
+}
+
+/* The same input gives bit-identical output, for any number of threads. */
+static void adaptation_is_deterministic_for_any_thread_count(void **state)
+{
+    (void)state;
+    snapshot reference = adapted_sphere(1, 1.0);
+    const int threads[] = {2, 3, 0, 1};
+    for (size_t k = 0; k < sizeof threads / sizeof threads[0]; ++k) {
+        snapshot other = adapted_sphere(threads[k], 1.0);
+        expect_same(&reference, &other, "another thread count");
+        snapshot_free(&other);
+    }
+    snapshot_free(&reference);
+}
+
+typedef struct {
+    double radius;
+    snapshot result;
+} adapt_job;
+
+static int adapt_in_thread(void *arg)
+{
+    adapt_job *job = arg;
+    job->result = adapted_sphere(0, job->radius);
+    return 0;
+}
+
+/* Four handles adapted in four threads at once give what they give one after another. */
+static void concurrent_handles_give_the_sequential_results(void **state)
+{
+    (void)state;
+    enum { jobs = 4 };
+    adapt_job concurrent[jobs];
+    thrd_t thread[jobs];
+    for (int k = 0; k < jobs; ++k) {
+        concurrent[k].radius = 1 + 0.5 * k;
+        assert_int_equal(thrd_create(&thread[k], adapt_in_thread, &concurrent[k]), thrd_success);
+    }
+    for (int k = 0; k < jobs; ++k)
+        assert_int_equal(thrd_join(thread[k], NULL), thrd_success);
+    for (int k = 0; k < jobs; ++k) {
+        snapshot sequential = adapted_sphere(0, 1 + 0.5 * k);
+        assert_true(concurrent[k].result.counts_status == SFA_OK);
+        expect_same(&sequential, &concurrent[k].result, "a concurrent handle");
+        snapshot_free(&sequential);
+        snapshot_free(&concurrent[k].result);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -393,6 +531,9 @@ int main(void)
         cmocka_unit_test(anisotropic_meshes_are_as_close_to_the_surface_with_as_many_vertices),
         cmocka_unit_test(fandisk_keeps_its_features_and_volume),
         cmocka_unit_test(spot_keeps_its_volume_and_triangle_quality),
+        cmocka_unit_test(nothing_lost_when_memory_runs_out),
+        cmocka_unit_test(adaptation_is_deterministic_for_any_thread_count),
+        cmocka_unit_test(concurrent_handles_give_the_sequential_results),
     };
     return cmocka_run_group_tests_name("adapt", tests, NULL, NULL);
 }
