@@ -1,0 +1,8 @@
+// The commands of the surfadapt tool; each returns the process's exit status (0 done,
+// 1 failed, 2 bad usage). argv[1] is the command's name.
+#pragma once
+
+int demo_command(int argc, char **argv);
+int info_command(int argc, char **argv);
+int features_command(int argc, char **argv);
+int remesh_command(int argc, char **argv);

@@ -1,0 +1,66 @@
+#!/bin/sh
+# The `surfadapt remesh` command: refines a unit cube written as OBJ under build/, checks the
+# summary and the VTK file it writes, and the failures (missing input, bad edge length,
+# unknown option, missing arguments). Needs the tool built (`make`).
+# Ends with "cli: N passed, M failed" and a non-zero status if anything failed.
+set -u
+cd "$(dirname "$0")/../.." || exit 1
+
+tool=${SURFADAPT:-bin/surfadapt}
+passed=0 failed=0
+check() { # $1 = description, then the command
+  what=$1
+  shift
+  if "$@"; then
+    passed=$((passed + 1))
+    echo "ok - $what"
+  else
+    failed=$((failed + 1))
+    echo "FAIL - $what"
+  fi
+}
+finish() {
+  echo "cli: $passed passed, $failed failed"
+  [ "$failed" -eq 0 ]
+  exit $?
+}
+
+if [ ! -x "$tool" ]; then
+  echo "FAIL - $tool is not built (run make)"
+  failed=1
+  finish
+fi
+
+mkdir -p build
+work=$(mktemp -d build/cli-test.XXXXXX) || exit 1
+trap 'rm -rf "$work"' EXIT
+
+# [0,1]^3, two triangles per face, outward and counter-clockwise (1-based OBJ indices).
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n' >"$work/cube.obj"
+printf 'f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\n' >>"$work/cube.obj"
+printf 'f 4 8 7\nf 4 7 3\nf 1 5 8\nf 1 8 4\nf 2 3 7\nf 2 7 6\n' >>"$work/cube.obj"
+
+vtk=$work/cube.vtk
+check "remesh the cube at edge length 0.25 exits 0" \
+  sh -c "'$tool' remesh '$work/cube.obj' '$vtk' --edge-length 0.25 >'$work/out'"
+check "the summary has the input and output rows" sh -c "grep -q '^  input ' '$work/out' && grep -q '^  output ' '$work/out'"
+# output row: label, vertices, triangles, volume change, ...
+rows=$(awk '$1 == "output" { print $2, $4 }' "$work/out")
+vertices=${rows% *}
+volume_change=${rows#* }
+check "more vertices than the cube's 8 (got $vertices)" [ "${vertices:-0}" -gt 8 ]
+check "volume unchanged (got $volume_change)" \
+  awk -v c="$volume_change" 'BEGIN { exit !(c != "" && c + 0 < 1e-12 && c + 0 > -1e-12) }'
+check "the VTK file has those points" grep -q "^POINTS $vertices double$" "$vtk"
+check "and still the 8 corners' ranks among them" sh -c "grep -q '^SCALARS rank int 1$' '$vtk'"
+check "--isotropic works too" "$tool" remesh "$work/cube.obj" "$work/iso.vtk" --edge-length 0.25 --isotropic
+
+check "a missing input fails" sh -c "! '$tool' remesh '$work/missing.obj' '$work/x.vtk' 2>'$work/err'"
+check "... naming the file" grep -q "missing.obj" "$work/err"
+check "a negative edge length is refused" \
+  sh -c "'$tool' remesh '$work/cube.obj' '$vtk' --edge-length -1 2>'$work/err'; [ \$? -eq 2 ]"
+check "... saying what is wrong" grep -q "positive" "$work/err"
+check "an unknown option is refused" sh -c "'$tool' remesh '$work/cube.obj' '$vtk' --bogus 2>/dev/null; [ \$? -eq 2 ]"
+check "missing arguments are refused" sh -c "'$tool' remesh '$work/cube.obj' 2>/dev/null; [ \$? -eq 2 ]"
+
+finish
