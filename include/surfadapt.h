@@ -344,11 +344,14 @@ int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t, double dt
  * Anisotropic vertex redistribution (paper §3.2): `iterations` Jacobi sweeps. In each, the
  * surface is analysed once (sfa_get_feature_ranks(), sfa_get_vertex_frames()); every smooth
  * vertex moves in its tangent plane towards the point that balances its edges' lengths in
- * the anisotropic metric, every ridge or boundary vertex along the line through its two
- * ridge neighbours, corners not at all; a correction along the primary space cancels each
- * move's first-order change of the enclosed volume. A vertex whose move would fold a
- * triangle stays put for that sweep. Fields are interpolated at the new positions.
- * Connectivity and vertex order do not change, so host arrays stay valid.
+ * the anisotropic metric and is lifted onto a quadratic surface fitted to its neighbours;
+ * every ridge or boundary vertex moves along the circle through itself and its two ridge
+ * neighbours (the line, where they are collinear); corners do not move. A vertex whose
+ * move would fold a triangle stays put for that sweep. After each sweep a closed surface
+ * gets its enclosed volume back by a common offset of its smooth vertices along their
+ * normals (a correction in the primary space), so smoothing alone never changes the volume.
+ * Fields are interpolated at the new positions. Connectivity and vertex order do not
+ * change, so host arrays stay valid.
  * @param s          the surface.
  * @param iterations number of sweeps, >= 0.
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (also: metric min angle not below max angle),
@@ -357,12 +360,30 @@ int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t, double dt
 int sfa_smooth(sfa_surface *s, int32_t iterations);
 
 /**
- * The full adaptation (paper §3–§4): smoothing, anisotropic flipping, splitting and
- * contraction. Vertex and triangle counts may change: read the mesh back with
- * sfa_get_counts() and sfa_get_mesh().
+ * The full adaptation (paper §3–§4) towards the edge length ::SFA_PARAM_EDGE_LENGTH (0:
+ * the mean edge length of the mesh last given to sfa_set_mesh()). Features are detected
+ * once and kept through the call. Then, up to 8 times, until a pass changes no
+ * connectivity: edge splitting (§4.1), edge contraction (§4.2), anisotropic edge flipping
+ * (§3.3) and two smoothing sweeps (as sfa_smooth()), each after a fresh analysis. Every
+ * threshold is a parameter (§4.3). A closed surface ends with the enclosed volume it
+ * started with (to round-off). Corners never move; ridge vertices stay on their ridge
+ * curves; boundaries stay boundaries.
+ *
+ * Vertex and triangle counts change and vertices are renumbered (survivors keep their
+ * order, new ones come after): read the mesh back with sfa_get_counts() and
+ * sfa_get_mesh(). Fields and velocities follow: a new or moved vertex gets the values
+ * interpolated (barycentrically) at its position in the old triangle it lies over, so
+ * that a field linear on a flat region stays exactly linear. A vertex put on a straight
+ * ridge edge is interpolated along that edge only, so values do not mix across the ridge
+ * (on a curved ridge, to second order in the edge length); a vertex merged into a corner
+ * or ridge vertex keeps that vertex's values. The result is the same
+ * for any number of threads and on every run. One call typically changes the density by
+ * up to a factor of four; call it again to go further.
  * @param s the surface.
- * @return ::SFA_OK, ::SFA_ERR_ARGUMENT, ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY,
- *         ::SFA_ERR_INTERNAL (in this release: "not implemented yet").
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (metric min angle not below max angle),
+ *         ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY, ::SFA_ERR_INTERNAL (a broken
+ *         result was caught; please report it). After any failure the surface, its
+ *         fields and velocities are as before.
  */
 int sfa_adapt(sfa_surface *s);
 
