@@ -155,7 +155,10 @@ enum sfa_measure_quantity {
     /** Shortest edge length, length units. */
     SFA_MEASURE_MIN_EDGE_LENGTH = 6,
     /** Longest edge length, length units. */
-    SFA_MEASURE_MAX_EDGE_LENGTH = 7
+    SFA_MEASURE_MAX_EDGE_LENGTH = 7,
+    /** Largest angle between the normals of two triangles that share an edge, degrees:
+        90 at a cube's edge, near 180 where the surface folds back on itself. */
+    SFA_MEASURE_MAX_NORMAL_TURN = 8
 };
 
 /** One adaptive surface. Opaque; create with sfa_create(), free with sfa_destroy(). */
@@ -362,9 +365,10 @@ int sfa_smooth(sfa_surface *s, int32_t iterations);
 /**
  * The full adaptation (paper §3–§4) towards the edge length ::SFA_PARAM_EDGE_LENGTH (0:
  * the mean edge length of the mesh last given to sfa_set_mesh()). Features are detected
- * once and kept through the call. Then, up to 8 times, until a pass changes no
- * connectivity: edge splitting (§4.1), edge contraction (§4.2), anisotropic edge flipping
- * (§3.3) and two smoothing sweeps (as sfa_smooth()), each after a fresh analysis. Every
+ * once and kept through the call. Then, up to 8 times, until a pass changes the
+ * connectivity around at most 1 in 500 vertices: edge splitting (§4.1), edge
+ * contraction (§4.2), anisotropic edge flipping (§3.3) and two smoothing sweeps (as
+ * sfa_smooth()), each after a fresh analysis. Every
  * threshold is a parameter (§4.3). A closed surface ends with the enclosed volume it
  * started with (to round-off). Corners never move; ridge vertices stay on their ridge
  * curves; boundaries stay boundaries.

@@ -49,6 +49,10 @@ int main(int argc, char **argv)
         return demo_command(argc, argv);
     if (command == "remesh")
         return remesh_command(argc, argv);
+    if (command == "enright")
+        return enright_command(argc, argv);
+    if (command == "vortex")
+        return vortex_command(argc, argv);
     if (command == "info")
         return info_command(argc, argv);
     if (command == "features")

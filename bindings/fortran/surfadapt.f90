@@ -65,6 +65,7 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_MEASURE_MAX_ASPECT_RATIO = 5
   integer(c_int), parameter, public :: SFA_MEASURE_MIN_EDGE_LENGTH = 6
   integer(c_int), parameter, public :: SFA_MEASURE_MAX_EDGE_LENGTH = 7
+  integer(c_int), parameter, public :: SFA_MEASURE_MAX_NORMAL_TURN = 8
 
   public :: sfa_version_string, sfa_abi_version, sfa_status_string
   public :: sfa_create, sfa_destroy, sfa_last_error

@@ -25,7 +25,8 @@ struct AdaptCounts {
 
 // Features are detected once, then carried through the call (carried_features.hpp). Each
 // pass: split, contract, flip, then smooth, every step after a fresh analysis of the
-// geometry as it then is; until a pass changes no connectivity or max_passes were made. A
+// geometry as it then is; until a pass changes the connectivity of at most 1 in 500
+// vertices or max_passes were made. A
 // closed surface then gets its enclosed volume back (restore_enclosed_volume). The fields
 // (one value set per vertex) follow every step. The mesh stays dense and valid.
 AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings);

@@ -26,7 +26,7 @@ SFA_EXPORT int sfa_measure(const sfa_surface *s, int quantity, double *value)
 {
     return call(s, "sfa_measure", [&] {
         require(value != nullptr, "value is NULL");
-        if (quantity < SFA_MEASURE_VOLUME || quantity > SFA_MEASURE_MAX_EDGE_LENGTH) {
+        if (quantity < SFA_MEASURE_VOLUME || quantity > SFA_MEASURE_MAX_NORMAL_TURN) {
             char message[120];
             std::snprintf(message, sizeof message,
                           "unknown quantity %d (quantities are 0 to %d, enum sfa_measure_quantity)", quantity,
@@ -44,6 +44,7 @@ SFA_EXPORT int sfa_measure(const sfa_surface *s, int quantity, double *value)
         case SFA_MEASURE_MAX_ASPECT_RATIO: *value = max_aspect_ratio(mesh); break;
         case SFA_MEASURE_MIN_EDGE_LENGTH: *value = edge_lengths(mesh).min; break;
         case SFA_MEASURE_MAX_EDGE_LENGTH: *value = edge_lengths(mesh).max; break;
+        case SFA_MEASURE_MAX_NORMAL_TURN: *value = max_normal_turn_degrees(mesh); break;
         }
     });
 }

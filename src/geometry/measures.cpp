@@ -92,4 +92,20 @@ double max_aspect_ratio(const TriMesh &mesh)
     return worst;
 }
 
+double max_normal_turn_degrees(const TriMesh &mesh)
+{
+    double largest = 0;
+    for (int32_t h = 0; h < 3 * mesh.num_triangles(); ++h) {
+        const int32_t twin = mesh.opp[h];
+        if (twin < h)
+            continue; // boundary, or seen from the other side
+        const auto normal = [&](int32_t t) {
+            const Triangle &c = mesh.tri[t];
+            return Vec3((mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]));
+        };
+        largest = std::max(largest, angle_between(normal(TriMesh::face(h)), normal(TriMesh::face(twin))));
+    }
+    return largest * degrees_per_radian;
+}
+
 } // namespace sfa

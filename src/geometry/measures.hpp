@@ -33,4 +33,8 @@ EdgeLengths edge_lengths(const TriMesh &mesh);
 // Worst circumradius / (2 inradius) over the triangles: 1 for equilateral ones.
 double max_aspect_ratio(const TriMesh &mesh);
 
+// Largest angle between the normals of two triangles sharing an edge, degrees (180 at a
+// fold); 0 for a mesh without interior edges.
+double max_normal_turn_degrees(const TriMesh &mesh);
+
 } // namespace sfa

@@ -21,6 +21,7 @@ static void unit_cube(void **state)
     /* Right isosceles triangle with legs 1: R = sqrt(2)/2, r = (2 - sqrt(2))/2,
      * R / (2 r) = (1 + sqrt(2)) / 2. */
     assert_near(measure(s, SFA_MEASURE_MAX_ASPECT_RATIO), (1 + sqrt(2.0)) / 2, 1e-12);
+    assert_near(measure(s, SFA_MEASURE_MAX_NORMAL_TURN), 90.0, 1e-12);
     sfa_destroy(s);
 }
 
@@ -123,6 +124,19 @@ static void geodesic_spheres_are_valid_at_any_frequency(void **state)
     }
 }
 
+/* A fold: a flat patch whose middle vertex is pulled through to the other side, so that
+ * its triangles face down while the others face up. */
+static void folded_patch_turns_by_almost_180_degrees(void **state)
+{
+    (void)state;
+    sfa_mesh_data grid = shape_grid(2, 2, 1.0);
+    grid.xyz[3 * 4] = 2.5; /* vertex (1, 1) moved past (2, 1): its fan turns over */
+    sfa_surface *s = make_surface(&grid, 0);
+    assert_true(measure(s, SFA_MEASURE_MAX_NORMAL_TURN) > 179);
+    sfa_destroy(s);
+    mesh_free(&grid);
+}
+
 static void open_flat_patch(void **state)
 {
     (void)state;
@@ -136,6 +150,7 @@ static void open_flat_patch(void **state)
     assert_near(measure(s, SFA_MEASURE_MAX_EDGE_LENGTH), 0.25 * sqrt(2.0), 1e-15);
     /* 4x2 cells: 5*2 + 3*4 = 22 axis edges and 8 diagonals. */
     assert_near(measure(s, SFA_MEASURE_MEAN_EDGE_LENGTH), 0.25 * (22 + 8 * sqrt(2.0)) / 30, 1e-15);
+    assert_true(measure(s, SFA_MEASURE_MAX_NORMAL_TURN) == 0.0);
     sfa_destroy(s);
     mesh_free(&grid);
 }
@@ -145,7 +160,7 @@ static void bad_arguments_and_state(void **state)
     (void)state;
     sfa_surface *s = make_cube_surface();
     double v = 77;
-    const int unknown[] = {-1, 8, 1000, INT32_MIN};
+    const int unknown[] = {-1, 9, 1000, INT32_MIN};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; ++i) {
         assert_error(s, sfa_measure(s, unknown[i], &v), SFA_ERR_ARGUMENT, "");
         assert_true(v == 77);
@@ -155,7 +170,7 @@ static void bad_arguments_and_state(void **state)
     sfa_destroy(s);
 
     assert_int_equal(sfa_create(&s), SFA_OK);
-    for (int q = SFA_MEASURE_VOLUME; q <= SFA_MEASURE_MAX_EDGE_LENGTH; ++q) {
+    for (int q = SFA_MEASURE_VOLUME; q <= SFA_MEASURE_MAX_NORMAL_TURN; ++q) {
         assert_error(s, sfa_measure(s, q, &v), SFA_ERR_STATE, "");
         assert_true(v == 77);
     }
@@ -172,6 +187,7 @@ int main(void)
         cmocka_unit_test(icosphere_matches_tetrahedra),
         cmocka_unit_test(geodesic_spheres_are_valid_at_any_frequency),
         cmocka_unit_test(open_flat_patch),
+        cmocka_unit_test(folded_patch_turns_by_almost_180_degrees),
         cmocka_unit_test(bad_arguments_and_state),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,0 +1,119 @@
+#include "flow_run.hpp"
+
+#include "cli.hpp"
+#include "flows.hpp"
+#include "icosphere.h"
+#include "time_series.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+} // namespace
+
+int run_flow(const FlowRun &run, FlowResult &result)
+{
+    int32_t nverts = 0, ntris = 0;
+    double *xyz = nullptr;
+    int32_t *tris = nullptr;
+    if (geodesic_sphere(run.frequency, run.radius, run.centre, &nverts, &xyz, &ntris, &tris) != 0) {
+        std::fprintf(stderr, "surfadapt: out of memory\n");
+        return 1;
+    }
+    sfa_surface *s = nullptr;
+    if (sfa_create(&s) != SFA_OK)
+        return 1;
+    const int rc = sfa_set_mesh(s, nverts, xyz, ntris, tris, 0);
+    std::free(xyz);
+    std::free(tris);
+    if (rc != SFA_OK)
+        return fail(s, "sfa_set_mesh");
+    if (run.isotropic)
+        sfa_set_param(s, SFA_PARAM_ANISOTROPIC, 0);
+
+    const double volume0 = measure(s, SFA_MEASURE_VOLUME), area0 = measure(s, SFA_MEASURE_AREA);
+    std::printf("%s: sphere of radius %g at (%g, %g, %g), %d vertices; T = %g, dt = %g, %d steps; %s adaptation "
+                "every %d steps\n\n",
+                run.title, run.radius, run.centre[0], run.centre[1], run.centre[2], nverts, run.period, run.dt,
+                run.steps, run.isotropic ? "isotropic" : "anisotropic", run.adapt_every);
+    std::printf("%5s %6s %9s %10s %13s %10s %9s %9s %9s %8s\n", "step", "t", "vertices", "triangles", "volume err %",
+                "area ratio", "min angle", "max angle", "max turn", "seconds");
+    TimeSeries series(run.out_dir, "surface");
+    std::string error;
+    const auto report = [&](int step, double t) {
+        int32_t v = 0, tcount = 0;
+        sfa_get_counts(s, &v, &tcount);
+        std::printf("%5d %6.3f %9d %10d %13.5f %10.3f %9.3f %9.3f %9.2f %8.2f\n", step, t, v, tcount,
+                    100 * (measure(s, SFA_MEASURE_VOLUME) - volume0) / volume0, measure(s, SFA_MEASURE_AREA) / area0,
+                    measure(s, SFA_MEASURE_MIN_ANGLE), measure(s, SFA_MEASURE_MAX_ANGLE),
+                    measure(s, SFA_MEASURE_MAX_NORMAL_TURN), result.seconds);
+        std::fflush(stdout);
+        return run.out_dir.empty() || series.save(s, t, error);
+    };
+    if (!report(0, 0)) {
+        std::fprintf(stderr, "surfadapt: %s\n", error.c_str());
+        sfa_destroy(s);
+        return 1;
+    }
+
+    FlowPeriod flow{run.period};
+    const auto start = Clock::now();
+    double t = 0;
+    for (int step = 1; step <= run.steps; ++step) {
+        const double t_end = step * run.dt;
+        int substeps = 0;
+        auto phase = Clock::now();
+        while (t < t_end - 1e-12 * run.dt) {
+            double taken = 0;
+            if (sfa_advect(s, run.velocity, &flow, t, t_end - t, &taken) != SFA_OK)
+                return fail(s, "sfa_advect");
+            t += taken;
+            ++substeps;
+        }
+        t = t_end;
+        result.advect_seconds += since(phase);
+        phase = Clock::now();
+        if (sfa_smooth(s, 1) != SFA_OK)
+            return fail(s, "sfa_smooth");
+        result.smooth_seconds += since(phase);
+        // More than two sub-steps: the fold control cut the step to less than half.
+        if (run.adapt_every > 0 && (step % run.adapt_every == 0 || substeps > 2)) {
+            phase = Clock::now();
+            if (sfa_adapt(s) != SFA_OK)
+                return fail(s, "sfa_adapt");
+            result.adapt_seconds += since(phase);
+        }
+        result.seconds = since(start);
+
+        const double volume_error = (measure(s, SFA_MEASURE_VOLUME) - volume0) / volume0;
+        if (std::abs(volume_error) > std::abs(result.worst_volume_error))
+            result.worst_volume_error = volume_error;
+        result.volume_error = volume_error;
+        result.max_area_ratio = std::max(result.max_area_ratio, measure(s, SFA_MEASURE_AREA) / area0);
+        result.max_normal_turn = std::max(result.max_normal_turn, measure(s, SFA_MEASURE_MAX_NORMAL_TURN));
+        int32_t v = 0, tcount = 0;
+        sfa_get_counts(s, &v, &tcount);
+        result.max_vertices = std::max(result.max_vertices, static_cast<int>(v));
+        if ((step % run.report_every == 0 || step == run.steps) && !report(step, t)) {
+            std::fprintf(stderr, "surfadapt: %s\n", error.c_str());
+            sfa_destroy(s);
+            return 1;
+        }
+    }
+    std::printf("\nvolume error at the end %.4f %% (worst %.4f %%), area up to x%.2f, up to %d vertices, largest "
+                "normal turn %.1f deg; %.1f s: advection %.1f s, smoothing %.1f s, adaptation %.1f s\n",
+                100 * result.volume_error, 100 * result.worst_volume_error, result.max_area_ratio, result.max_vertices,
+                result.max_normal_turn, result.seconds, result.advect_seconds, result.smooth_seconds,
+                result.adapt_seconds);
+    if (!run.out_dir.empty())
+        std::printf("time series: %s/surface.pvd\n", run.out_dir.c_str());
+    sfa_destroy(s);
+    return 0;
+}

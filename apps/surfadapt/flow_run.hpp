@@ -1,0 +1,36 @@
+// Tracking a sphere through one of the paper's flows with the schedule a host follows
+// (README, "Dynamic surfaces"): every step, RK4 advection (sfa_advect, sub-stepping while
+// the fold control cuts the step) then one smoothing sweep; a full sfa_adapt every k steps,
+// or at once after a step the fold control had to cut to less than half.
+#pragma once
+
+#include "surfadapt.h"
+
+#include <string>
+
+struct FlowRun {
+    const char *title;
+    sfa_velocity_fn velocity;
+    double period;
+    double dt;
+    int steps;
+    double centre[3];
+    double radius;
+    int frequency;        // initial geodesic sphere: 10 n^2 + 2 vertices
+    int adapt_every;      // 0: never adapt
+    bool isotropic;
+    std::string out_dir;  // empty: no files
+    int report_every;     // table rows (and saved steps)
+};
+
+struct FlowResult {
+    double volume_error = 0;       // at the end, relative
+    double worst_volume_error = 0; // over the run, relative, largest magnitude
+    double max_area_ratio = 1;
+    double max_normal_turn = 0;    // degrees, over every step: near 180 would be a fold
+    int max_vertices = 0;
+    double seconds = 0, advect_seconds = 0, smooth_seconds = 0, adapt_seconds = 0;
+};
+
+// Runs and prints the table; returns the exit status.
+int run_flow(const FlowRun &run, FlowResult &result);
