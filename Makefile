@@ -158,7 +158,7 @@ $(PLUGIN_TEST): tests/plugin/test_dlopen.c | deps
 check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(PLUGIN_TEST) $(SAN_TESTS)
 	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) \
 	  "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" \
-	  tests/install/test_install.sh tests/cli/test_features_cli.sh tests/cli/test_remesh_cli.sh $(SAN_TESTS)
+	  tests/install/test_install.sh tests/cli/test_features_cli.sh tests/cli/test_remesh_cli.sh tests/cli/test_flows_cli.sh $(SAN_TESTS)
 
 # ------------------------------------------------------------------ ABI
 # abidiff exit status is a bit set: 4 = the ABI changed (additions), 8 = an incompatible

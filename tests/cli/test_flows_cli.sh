@@ -1,0 +1,70 @@
+#!/bin/sh
+# Short runs of the paper's flows through the command-line tool (coarse spheres, part of a
+# period; the full runs are `make bench`): they finish, keep the volume within 0.5 %, never
+# fold the surface (no two neighbouring triangles' normals more than 150 degrees apart),
+# and write a VTK time series ParaView can open. Needs the tool built (`make`).
+# Ends with "cli: N passed, M failed" and a non-zero status if anything failed.
+set -u
+cd "$(dirname "$0")/../.." || exit 1
+
+tool=${SURFADAPT:-bin/surfadapt}
+passed=0 failed=0
+check() { # $1 = description, then the command
+  what=$1
+  shift
+  if "$@"; then
+    passed=$((passed + 1))
+    echo "ok - $what"
+  else
+    failed=$((failed + 1))
+    echo "FAIL - $what"
+  fi
+}
+finish() {
+  echo "cli: $passed passed, $failed failed"
+  [ "$failed" -eq 0 ]
+  exit $?
+}
+
+if [ ! -x "$tool" ]; then
+  echo "FAIL - $tool is not built (run make)"
+  failed=1
+  finish
+fi
+
+mkdir -p build
+work=$(mktemp -d build/cli-test.XXXXXX) || exit 1
+trap 'rm -rf "$work"' EXIT
+
+# The summary line: "volume error at the end V % (worst W %), ... largest normal turn N deg; ..."
+summary_ok() { # $1 = output file
+  awk '/^volume error at the end/ {
+         v = $6; w = $9; sub(/\(worst /, "", w)
+         for (i = 1; i <= NF; i++) if ($i == "turn") n = $(i + 1)
+         found = 1
+         if (v < 0) v = -v; if (w < 0) w = -w
+         exit !(v < 0.5 && w < 0.5 && n < 150)
+       }
+       END { if (!found) exit 1 }' "$1"
+}
+
+check "enright (a coarse sphere of 1002 vertices, 60 steps) exits 0" \
+  sh -c "'$tool' enright --resolution 10 --steps 60 --report-every 20 --out '$work/enright' >'$work/enright.txt'"
+cat "$work/enright.txt"
+check "enright: volume within 0.5 %, no fold" summary_ok "$work/enright.txt"
+check "enright: the time series lists 4 saved steps" \
+  sh -c "[ \$(grep -c '<DataSet ' '$work/enright/surface.pvd') -eq 4 ]"
+check "enright: each step is a VTK unstructured grid" grep -q 'UnstructuredGrid' "$work/enright/surface_0003.vtu"
+
+check "vortex --period 2 (coarse, 60 steps) exits 0" \
+  sh -c "'$tool' vortex --period 2 --resolution 10 --steps 60 --report-every 20 >'$work/vortex.txt'"
+cat "$work/vortex.txt"
+check "vortex: volume within 0.5 %, no fold" summary_ok "$work/vortex.txt"
+
+check "vortex refuses a period other than 2 or 6" \
+  sh -c "'$tool' vortex --period 3 2>/dev/null; [ \$? -eq 2 ]"
+check "an unknown option is refused" sh -c "'$tool' enright --bogus 2>/dev/null; [ \$? -eq 2 ]"
+check "an unwritable output directory fails" \
+  sh -c "! '$tool' enright --resolution 4 --steps 1 --out '$work/no/such/dir' >/dev/null 2>&1"
+
+finish
