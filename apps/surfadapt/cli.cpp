@@ -9,11 +9,19 @@
 #include <cstring>
 #include <vector>
 
+#include <cerrno>
+#include <sys/stat.h>
+
 int fail(sfa_surface *s, const char *what)
 {
     std::fprintf(stderr, "surfadapt: %s: %s\n", what, sfa_last_error(s));
     sfa_destroy(s);
     return 1;
+}
+
+bool ensure_directory(const std::string &path)
+{
+    return mkdir(path.c_str(), 0777) == 0 || errno == EEXIST;
 }
 
 double measure(const sfa_surface *s, int quantity)

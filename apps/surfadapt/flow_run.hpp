@@ -32,5 +32,8 @@ struct FlowResult {
     double seconds = 0, advect_seconds = 0, smooth_seconds = 0, adapt_seconds = 0;
 };
 
+// The paper's Enright test (§5.2.2).
+FlowRun enright_setup();
+
 // Runs and prints the table; returns the exit status.
 int run_flow(const FlowRun &run, FlowResult &result);

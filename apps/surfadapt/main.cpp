@@ -1,7 +1,8 @@
 // surfadapt: the command-line tool. A host of the library like any other: it uses only
 // the public C interface.
 //
-//   surfadapt demo              remesh a CAD part, then advect a sphere through the Enright flow
+//   surfadapt demo              remesh a CAD part, then run the Enright test
+//   surfadapt enright, vortex   the paper's flows with adaptation, as a table and a VTK series
 //   surfadapt remesh IN OUT     remesh an OBJ/OFF mesh at a chosen edge length, write VTK
 //   surfadapt info FILE         validate an OBJ/OFF mesh and print its measures
 //   surfadapt features IN OUT   write the detected features of a mesh as VTK for ParaView
@@ -16,14 +17,23 @@ const char *const usage =
     "usage: surfadapt COMMAND [OPTIONS]\n"
     "\n"
     "commands:\n"
-    "  demo [--mesh FILE] [--out DIR] [--subdivisions K] [--steps N]\n"
+    "  demo [--mesh FILE] [--out DIR] [--resolution N] [--steps S]\n"
     "        first remesh FILE (default: fandisk.obj of $SFA_DATA_DIR, else ../shared/data;\n"
     "        without it a generated box) at half its mean edge length and write\n"
-    "        DIR/remeshed.vtk (DIR defaults to .); then advect a sphere of radius 0.15 at\n"
-    "        (0.35, 0.35, 0.35) through the Enright flow (period T = 3, dt = 0.015) with\n"
-    "        fourth-order Runge-Kutta and fold control, and print volume, area and angles\n"
-    "        every 20 steps. K (default 5) sets the icosphere resolution: 10*4^K+2 vertices.\n"
-    "        N defaults to 200 (t = 3).\n"
+    "        DIR/remeshed.vtk (DIR defaults to .); then run the Enright test as 'enright'\n"
+    "        does, writing the time series to DIR/enright\n"
+    "  enright [--resolution N] [--dt DT] [--steps S] [--adapt-every K] [--isotropic]\n"
+    "          [--report-every R] [--out DIR]\n"
+    "        the Enright test (paper §5.2.2): a sphere of radius 0.15 at (0.35, 0.35, 0.35)\n"
+    "        of 10 N^2 + 2 vertices (N = 48: 23,042) through the deformation field of period\n"
+    "        T = 3 with time step DT (0.015) for S steps (T / DT); every step RK4 advection\n"
+    "        with fold control and one smoothing sweep, sfa_adapt every K steps (4; 0 never)\n"
+    "        or after a step the fold control cut to less than half. Prints a table every R\n"
+    "        steps (20) and, with --out, writes DIR/surface.pvd and one .vtu per table row\n"
+    "  vortex [--period 2|6] [same options as enright]\n"
+    "        the vortex flow (paper §5.2.1, §5.2.3): a sphere of radius 0.15 at\n"
+    "        (0.5, 0.75, 0.5); period 2 with DT 0.01 from N = 33 (10,892 vertices), period 6\n"
+    "        with DT 0.015 from N = 48\n"
     "  remesh IN OUT.vtk [--edge-length L] [--isotropic] [--drop-unreferenced]\n"
     "        adapt an OBJ or OFF mesh to edge length L (default: its mean edge length),\n"
     "        anisotropically unless --isotropic, print a quality summary and write the\n"

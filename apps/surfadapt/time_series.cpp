@@ -1,9 +1,10 @@
 #include "time_series.hpp"
 
+#include "cli.hpp"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <sys/stat.h>
 
 namespace {
 
@@ -21,7 +22,7 @@ TimeSeries::TimeSeries(std::string directory, std::string name) : directory_(std
 
 bool TimeSeries::save(const sfa_surface *s, double time, std::string &error)
 {
-    if (mkdir(directory_.c_str(), 0777) != 0 && errno != EEXIST)
+    if (!ensure_directory(directory_))
         return fail_with(error, directory_);
     int32_t nverts = 0, ntris = 0;
     sfa_get_counts(s, &nverts, &ntris);
