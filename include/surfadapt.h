@@ -10,6 +10,15 @@
  * those of X. Jiao, A. Colombi, X. Ni and J. C. Hart, "Anisotropic Mesh
  * Adaptation for Evolving Triangulated Surfaces".
  *
+ * @par Use with a moving interface
+ * Per time step of the host: (1) move the surface with sfa_advect() (a velocity
+ * callback, RK4) or sfa_set_velocities() and sfa_move(), repeating while `dt_taken` is
+ * less than what is left of the step; (2) sfa_smooth(s, 1); (3) every few steps (the
+ * paper: 4), or at once after a step the fold control had to cut to less than half,
+ * sfa_adapt(), then read the new mesh (sfa_get_counts(), sfa_get_mesh()) and fields.
+ * Smoothing and adaptation keep a closed surface's volume to round-off. The tool's
+ * `surfadapt enright` and `surfadapt vortex` follow exactly this schedule.
+ *
  * @par Conventions
  * - Counts and indices are `int32_t`; coordinates, velocities, times and field
  *   values are `double`, in the host's own (consistent) units.
