@@ -54,6 +54,7 @@ UNIT_TESTS       := $(patsubst tests/unit/%.cpp,build/tests/%,$(sort $(wildcard 
 SAN_TESTS        := $(patsubst build/tests/%,build/san/tests/%,$(C_TESTS))
 ALLOC_HOOK_OBJ   := build/tests/c/alloc_hook/alloc_hook.o
 FORTRAN_TEST     := build/tests/test_fortran
+FORTRAN_EXAMPLE  := build/examples/vortex_host
 PLUGIN_TEST      := build/tests/test_plugin
 # C benchmarks use the public API; C++ ones (bench/*.cpp) time internal steps.
 BENCHES          := $(patsubst bench/%.c,build/bench/%,$(sort $(wildcard bench/*.c))) \
@@ -151,12 +152,17 @@ $(FORTRAN_TEST): tests/fortran/test_surfadapt.f90 $(FLIB_A) $(FMOD) $(LIB_SO) $(
 	@mkdir -p $(@D)/fortran
 	$(FC) $(FFLAGS) -Ilib/fortran -J $(@D)/fortran -o $@ $< $(FLIB_A) -Llib -lsurfadapt $(TEST_RPATH)
 
+# The example host, built the way a Fortran host builds against the library.
+$(FORTRAN_EXAMPLE): bindings/fortran/examples/vortex_host.f90 $(FLIB_A) $(FMOD) $(LIB_SO) $(LIB_DEV)
+	@mkdir -p $(@D)
+	$(FC) $(FFLAGS) -Ilib/fortran -J $(@D) -o $@ $< $(FLIB_A) -Llib -lsurfadapt -Wl,-rpath,'$$ORIGIN/../../lib'
+
 $(PLUGIN_TEST): tests/plugin/test_dlopen.c | deps
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -o $@ $< -ldl
 
-check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(PLUGIN_TEST) $(SAN_TESTS)
-	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) \
+check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE) $(PLUGIN_TEST) $(SAN_TESTS)
+	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) "$(FORTRAN_EXAMPLE) 60" \
 	  "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" \
 	  tests/install/test_install.sh tests/cli/test_features_cli.sh tests/cli/test_remesh_cli.sh tests/cli/test_flows_cli.sh $(SAN_TESTS)
 
