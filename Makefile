@@ -187,6 +187,7 @@ build/bench/%: bench/%.cpp $(TEST_SUPPORT_OBJ) $(LIB_A)
 	$(CXX) $(CXXFLAGS) -Ibench -Iapps/surfadapt -o $@ $< $(TEST_SUPPORT_OBJ) $(LIB_A) -lm
 bench: all $(BENCHES)
 	@for b in $(BENCHES); do $$b || exit 1; done
+	@bench/bench_flows.sh
 
 # ------------------------------------------------------------------ documentation
 doc: deps-doc

@@ -112,6 +112,15 @@ int run_flow(const FlowRun &run, FlowResult &result)
                 100 * result.volume_error, 100 * result.worst_volume_error, result.max_area_ratio, result.max_vertices,
                 result.max_normal_turn, result.seconds, result.advect_seconds, result.smooth_seconds,
                 result.adapt_seconds);
+    if (run.json)
+        std::printf("{\"bench\":\"flow\",\"flow\":\"%s\",\"anisotropic\":%d,\"vertices_start\":%d,"
+                    "\"vertices_max\":%d,\"steps\":%d,\"volume_error\":%.3e,\"worst_volume_error\":%.3e,"
+                    "\"max_area_ratio\":%.3f,\"max_normal_turn\":%.1f,\"seconds\":%.2f,\"advect_s\":%.2f,"
+                    "\"smooth_s\":%.2f,\"adapt_s\":%.2f,\"adaptation_over_advection\":%.1f}\n",
+                    run.title, run.isotropic ? 0 : 1, nverts, result.max_vertices, run.steps, result.volume_error,
+                    result.worst_volume_error, result.max_area_ratio, result.max_normal_turn, result.seconds,
+                    result.advect_seconds, result.smooth_seconds, result.adapt_seconds,
+                    (result.smooth_seconds + result.adapt_seconds) / result.advect_seconds);
     if (!run.out_dir.empty())
         std::printf("time series: %s/surface.pvd\n", run.out_dir.c_str());
     sfa_destroy(s);

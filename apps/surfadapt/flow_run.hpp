@@ -21,6 +21,7 @@ struct FlowRun {
     bool isotropic;
     std::string out_dir;  // empty: no files
     int report_every;     // table rows (and saved steps)
+    bool json = false;    // also print the summary as one JSON line (for benchmarks)
 };
 
 struct FlowResult {

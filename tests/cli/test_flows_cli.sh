@@ -57,9 +57,11 @@ check "enright: the time series lists 4 saved steps" \
 check "enright: each step is a VTK unstructured grid" grep -q 'UnstructuredGrid' "$work/enright/surface_0003.vtu"
 
 check "vortex --period 2 (coarse, 60 steps) exits 0" \
-  sh -c "'$tool' vortex --period 2 --resolution 10 --steps 60 --report-every 20 >'$work/vortex.txt'"
+  sh -c "'$tool' vortex --period 2 --resolution 10 --steps 60 --report-every 20 --json >'$work/vortex.txt'"
 cat "$work/vortex.txt"
 check "vortex: volume within 0.5 %, no fold" summary_ok "$work/vortex.txt"
+check "vortex --json: the summary as one JSON line with the phase times" \
+  grep -q '^{"bench":"flow","flow":"Vortex flow, T = 2",.*"advect_s":.*"adapt_s":' "$work/vortex.txt"
 
 check "vortex refuses a period other than 2 or 6" \
   sh -c "'$tool' vortex --period 3 2>/dev/null; [ \$? -eq 2 ]"
