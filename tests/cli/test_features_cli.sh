@@ -7,34 +7,7 @@
 set -u
 cd "$(dirname "$0")/../.." || exit 1
 
-tool=${SURFADAPT:-bin/surfadapt}
-passed=0 failed=0
-check() { # $1 = description, then the command
-  what=$1
-  shift
-  if "$@"; then
-    passed=$((passed + 1))
-    echo "ok - $what"
-  else
-    failed=$((failed + 1))
-    echo "FAIL - $what"
-  fi
-}
-finish() {
-  echo "cli: $passed passed, $failed failed"
-  [ "$failed" -eq 0 ]
-  exit $?
-}
-
-if [ ! -x "$tool" ]; then
-  echo "FAIL - $tool is not built (run make)"
-  failed=1
-  finish
-fi
-
-mkdir -p build
-work=$(mktemp -d build/cli-test.XXXXXX) || exit 1
-trap 'rm -rf "$work"' EXIT
+. tests/cli/cli_testing.sh
 
 # [0,1]^3, two triangles per face, outward and counter-clockwise (1-based OBJ indices).
 cat >"$work/cube.obj" <<'OBJ'

@@ -150,4 +150,33 @@ static inline sfa_mesh_data read_back(const sfa_surface *s)
     return m;
 }
 
+#ifndef SFA_NO_ALLOC_HOOK
+#include "alloc_hook/alloc_hook.h"
+
+/* Runs op(s) with its first, second, ... allocation failing until it succeeds: every
+ * failure must be SFA_ERR_MEMORY, say "out of memory" and leave the surface exactly as it
+ * was. Returns how many allocations the successful call made. */
+static inline long expect_nothing_lost_at_every_allocation(sfa_surface *s, int (*op)(sfa_surface *))
+{
+    int rc = SFA_ERR_MEMORY;
+    long n = 0;
+    for (; rc == SFA_ERR_MEMORY && n < 1000000; ++n) {
+        snapshot before, after;
+        snapshot_take(s, &before);
+        sfa_test_fail_allocation_after(n);
+        rc = op(s);
+        sfa_test_fail_allocation_after(-1);
+        if (rc == SFA_ERR_MEMORY) {
+            assert_true(contains_phrase(sfa_last_error(s), "out of memory"));
+            snapshot_take(s, &after);
+            assert_same_snapshot(&before, &after);
+            snapshot_free(&after);
+        }
+        snapshot_free(&before);
+    }
+    assert_int_equal(rc, SFA_OK);
+    return n - 1;
+}
+#endif
+
 #endif
