@@ -7,15 +7,6 @@
 
 
 
-static sfa_surface *surface_of(const sfa_mesh_data *m)
-{
-    char err[512];
-    sfa_surface *s = surface_from(m, 0, err, sizeof err);
-    if (!s)
-        fail_msg("%s", err);
-    return s;
-}
-
 /* How many of the three coordinates of p lie on the box's bounds (to tol). */
 static int coordinates_on_bounds(const double *p, const double lo[3], const double hi[3], double tol)
 {
@@ -34,7 +25,7 @@ static void box_refined_keeps_corners_faces_volume_and_linear_fields(void **stat
     (void)state;
     const double lo[3] = {0, 0, 0}, hi[3] = {2, 1, 0.5};
     sfa_mesh_data m = shape_box(2, lo, hi);
-    sfa_surface *s = surface_of(&m);
+    sfa_surface *s = make_surface(&m, 0);
     double *field = malloc(sizeof(double) * 2 * (size_t)m.nverts);
     for (int32_t v = 0; v < m.nverts; ++v) {
         const double *p = m.xyz + 3 * v;
@@ -110,7 +101,7 @@ static void sphere_at_its_own_edge_length_gets_good_angles_and_keeps_volume(void
 {
     (void)state;
     sfa_mesh_data m = shape_jittered_icosphere(4, 1.0, 1.0 / 3, 7);
-    sfa_surface *s = surface_of(&m);
+    sfa_surface *s = make_surface(&m, 0);
     const double volume = measure(s, SFA_MEASURE_VOLUME), min_angle = measure(s, SFA_MEASURE_MIN_ANGLE);
     assert_ok(s, sfa_adapt(s));
     int32_t nverts, ntris;
@@ -170,7 +161,7 @@ static double tube_distance(const double p[3]) { return fabs(sqrt(p[0] * p[0] + 
 static surface_error adapted_error(const sfa_mesh_data *m, int anisotropic, double edge_length,
                                    exact_distance_fn distance)
 {
-    sfa_surface *s = surface_of(m);
+    sfa_surface *s = make_surface(m, 0);
     assert_int_equal(sfa_set_param(s, SFA_PARAM_ANISOTROPIC, anisotropic), SFA_OK);
     assert_int_equal(sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, edge_length), SFA_OK);
     for (int call = 0; call < 3; ++call)
@@ -328,7 +319,7 @@ static double adapt_real_model(const char *name, double scale, feature_curves *b
 {
     sfa_mesh_data m;
     read_data_or_skip(name, &m);
-    sfa_surface *s = surface_of(&m);
+    sfa_surface *s = make_surface(&m, 0);
     *before = curves_of(s);
     const double volume = measure(s, SFA_MEASURE_VOLUME), good_before = share_of_good_triangles(s);
     assert_int_equal(sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, scale * measure(s, SFA_MEASURE_MEAN_EDGE_LENGTH)), SFA_OK);
@@ -396,7 +387,7 @@ static void nothing_lost_when_memory_runs_out(void **state)
 #else
     const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
     sfa_mesh_data m = shape_box(1, lo, hi);
-    sfa_surface *s = surface_of(&m);
+    sfa_surface *s = make_surface(&m, 0);
     double *field = malloc(sizeof(double) * (size_t)m.nverts), *velocity = malloc(sizeof(double) * 3 * (size_t)m.nverts);
     for (int32_t v = 0; v < m.nverts; ++v) {
         field[v] = m.xyz[3 * v] + 2 * m.xyz[3 * v + 2];
@@ -430,7 +421,7 @@ static void nothing_lost_when_memory_runs_out(void **state)
 static snapshot adapted_sphere(int threads, double radius)
 {
     sfa_mesh_data m = shape_jittered_icosphere(3, radius, 0.3, 11);
-    sfa_surface *s = surface_of(&m);
+    sfa_surface *s = make_surface(&m, 0);
     double *field = malloc(sizeof(double) * (size_t)m.nverts);
     for (int32_t v = 0; v < m.nverts; ++v)
         field[v] = sin(3 * m.xyz[3 * v]) + m.xyz[3 * v + 1];

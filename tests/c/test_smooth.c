@@ -10,15 +10,6 @@ static double jitter(uint64_t *state)
     return (double)(*state >> 11) / (double)(1ULL << 53) * 2 - 1;
 }
 
-static sfa_surface *surface_of(const sfa_mesh_data *m)
-{
-    char err[512];
-    sfa_surface *s = surface_from(m, 0, err, sizeof err);
-    if (!s)
-        fail_msg("%s", err);
-    return s;
-}
-
 /* A unit sphere whose vertices were moved tangentially by up to a third of an edge. */
 static void jittered_sphere_gets_better_angles_and_keeps_volume_and_shape(void **state)
 {
@@ -45,7 +36,7 @@ static void jittered_sphere_gets_better_angles_and_keeps_volume_and_shape(void *
         for (int k = 0; k < 3; ++k)
             p[k] /= sqrt(length);
     }
-    sfa_surface *s = surface_of(&m);
+    sfa_surface *s = make_surface(&m, 0);
     const double volume = measure(s, SFA_MEASURE_VOLUME), min_angle = measure(s, SFA_MEASURE_MIN_ANGLE);
     assert_int_equal(sfa_smooth(s, 20), SFA_OK);
     const double new_volume = measure(s, SFA_MEASURE_VOLUME), new_min_angle = measure(s, SFA_MEASURE_MIN_ANGLE);
@@ -81,7 +72,7 @@ static void jittered_box_keeps_corners_edges_planes_and_volume(void **state)
             if (*x != lo[k] && *x != hi[k])
                 *x += 0.3 * (hi[k] - lo[k]) / n * jitter(&seed);
         }
-    sfa_surface *s = surface_of(&m);
+    sfa_surface *s = make_surface(&m, 0);
     const double volume = measure(s, SFA_MEASURE_VOLUME), min_angle = measure(s, SFA_MEASURE_MIN_ANGLE);
     assert_int_equal(sfa_smooth(s, 10), SFA_OK);
     sfa_mesh_data out = read_back(s);
@@ -130,7 +121,7 @@ static void linear_field_stays_linear_on_a_flat_patch(void **state)
         field[2 * v] = 2 * m.xyz[3 * v] - 3 * m.xyz[3 * v + 1] + 1;
         field[2 * v + 1] = -m.xyz[3 * v] + 0.5;
     }
-    sfa_surface *s = surface_of(&m);
+    sfa_surface *s = make_surface(&m, 0);
     int32_t id = -1;
     assert_int_equal(sfa_add_field(s, 2, field, &id), SFA_OK);
     assert_int_equal(sfa_smooth(s, 5), SFA_OK);
@@ -164,7 +155,7 @@ static void smoothing_is_deterministic_for_any_thread_count(void **state)
     for (int anisotropic = 0; anisotropic <= 1; ++anisotropic) {
         snapshot first;
         for (size_t run = 0; run < sizeof threads / sizeof threads[0]; ++run) {
-            sfa_surface *s = surface_of(&m);
+            sfa_surface *s = make_surface(&m, 0);
             int32_t id;
             assert_int_equal(sfa_add_field(s, 1, field, &id), SFA_OK);
             assert_int_equal(sfa_set_param(s, SFA_PARAM_ANISOTROPIC, anisotropic), SFA_OK);
@@ -202,7 +193,7 @@ static void nothing_lost_when_memory_runs_out(void **state)
     skip();
 #else
     sfa_mesh_data m = shape_noisy_icosphere(2, 1.0, 0.2, 9);
-    sfa_surface *s = surface_of(&m);
+    sfa_surface *s = make_surface(&m, 0);
     double *field = calloc((size_t)m.nverts, sizeof(double));
     int32_t id;
     for (int32_t v = 0; v < m.nverts; ++v)
