@@ -167,7 +167,18 @@ enum sfa_measure_quantity {
     SFA_MEASURE_MAX_EDGE_LENGTH = 7,
     /** Largest angle between the normals of two triangles that share an edge, degrees:
         90 at a cube's edge, near 180 where the surface folds back on itself. */
-    SFA_MEASURE_MAX_NORMAL_TURN = 8
+    SFA_MEASURE_MAX_NORMAL_TURN = 8,
+    /** Wall-clock seconds the successful sfa_smooth() and sfa_adapt() calls on this handle
+        have spent, since sfa_create(), in surface analysis (quadrics, metric, features).
+        With the next three, where the time of a run goes; the one quantity that does
+        not need a mesh set, and that differs from run to run. */
+    SFA_MEASURE_SECONDS_ANALYSIS = 9,
+    /** The same, in smoothing sweeps (with their field transfer and volume restoration). */
+    SFA_MEASURE_SECONDS_SMOOTHING = 10,
+    /** The same, in flipping passes. */
+    SFA_MEASURE_SECONDS_FLIPPING = 11,
+    /** The same, in splitting and contraction passes. */
+    SFA_MEASURE_SECONDS_REPAIR = 12
 };
 
 /** One adaptive surface. Opaque; create with sfa_create(), free with sfa_destroy(). */
@@ -375,7 +386,7 @@ int sfa_smooth(sfa_surface *s, int32_t iterations);
  * The full adaptation (paper §3–§4) towards the edge length ::SFA_PARAM_EDGE_LENGTH (0:
  * the mean edge length of the mesh last given to sfa_set_mesh()). Features are detected
  * once and kept through the call. Then, up to 8 times, until a pass changes the
- * connectivity around at most 1 in 500 vertices: edge splitting (§4.1), edge
+ * connectivity around at most 1 in 100 vertices: edge splitting (§4.1), edge
  * contraction (§4.2), anisotropic edge flipping (§3.3) and two smoothing sweeps (as
  * sfa_smooth()), each after a fresh analysis. Every
  * threshold is a parameter (§4.3). A closed surface ends with the enclosed volume it

@@ -107,19 +107,27 @@ int run_flow(const FlowRun &run, FlowResult &result)
             return 1;
         }
     }
+    result.analysis_seconds = measure(s, SFA_MEASURE_SECONDS_ANALYSIS);
+    result.smoothing_seconds = measure(s, SFA_MEASURE_SECONDS_SMOOTHING);
+    result.flipping_seconds = measure(s, SFA_MEASURE_SECONDS_FLIPPING);
+    result.repair_seconds = measure(s, SFA_MEASURE_SECONDS_REPAIR);
     std::printf("\nvolume error at the end %.4f %% (worst %.4f %%), area up to x%.2f, up to %d vertices, largest "
-                "normal turn %.1f deg; %.1f s: advection %.1f s, smoothing %.1f s, adaptation %.1f s\n",
+                "normal turn %.1f deg\n%.1f s: advection %.1f s, sfa_smooth %.1f s, sfa_adapt %.1f s; inside "
+                "these, analysis %.1f s, smoothing %.1f s, flipping %.1f s, splitting and contraction %.1f s\n",
                 100 * result.volume_error, 100 * result.worst_volume_error, result.max_area_ratio, result.max_vertices,
                 result.max_normal_turn, result.seconds, result.advect_seconds, result.smooth_seconds,
-                result.adapt_seconds);
+                result.adapt_seconds, result.analysis_seconds, result.smoothing_seconds, result.flipping_seconds,
+                result.repair_seconds);
     if (run.json)
         std::printf("{\"bench\":\"flow\",\"flow\":\"%s\",\"anisotropic\":%d,\"vertices_start\":%d,"
                     "\"vertices_max\":%d,\"steps\":%d,\"volume_error\":%.3e,\"worst_volume_error\":%.3e,"
                     "\"max_area_ratio\":%.3f,\"max_normal_turn\":%.1f,\"seconds\":%.2f,\"advect_s\":%.2f,"
-                    "\"smooth_s\":%.2f,\"adapt_s\":%.2f,\"adaptation_over_advection\":%.1f}\n",
+                    "\"smooth_s\":%.2f,\"adapt_s\":%.2f,\"analysis_s\":%.2f,\"smoothing_s\":%.2f,"
+                    "\"flipping_s\":%.2f,\"split_contract_s\":%.2f,\"adaptation_over_advection\":%.1f}\n",
                     run.title, run.isotropic ? 0 : 1, nverts, result.max_vertices, run.steps, result.volume_error,
                     result.worst_volume_error, result.max_area_ratio, result.max_normal_turn, result.seconds,
-                    result.advect_seconds, result.smooth_seconds, result.adapt_seconds,
+                    result.advect_seconds, result.smooth_seconds, result.adapt_seconds, result.analysis_seconds,
+                    result.smoothing_seconds, result.flipping_seconds, result.repair_seconds,
                     (result.smooth_seconds + result.adapt_seconds) / result.advect_seconds);
     if (!run.out_dir.empty())
         std::printf("time series: %s/surface.pvd\n", run.out_dir.c_str());

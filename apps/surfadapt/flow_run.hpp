@@ -30,7 +30,9 @@ struct FlowResult {
     double max_area_ratio = 1;
     double max_normal_turn = 0;    // degrees, over every step: near 180 would be a fold
     int max_vertices = 0;
-    double seconds = 0, advect_seconds = 0, smooth_seconds = 0, adapt_seconds = 0;
+    double seconds = 0, advect_seconds = 0, smooth_seconds = 0, adapt_seconds = 0; // per call
+    // Inside sfa_smooth and sfa_adapt, per phase (SFA_MEASURE_SECONDS_*).
+    double analysis_seconds = 0, smoothing_seconds = 0, flipping_seconds = 0, repair_seconds = 0;
 };
 
 // The paper's Enright test (§5.2.2).

@@ -66,6 +66,10 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_MEASURE_MIN_EDGE_LENGTH = 6
   integer(c_int), parameter, public :: SFA_MEASURE_MAX_EDGE_LENGTH = 7
   integer(c_int), parameter, public :: SFA_MEASURE_MAX_NORMAL_TURN = 8
+  integer(c_int), parameter, public :: SFA_MEASURE_SECONDS_ANALYSIS = 9
+  integer(c_int), parameter, public :: SFA_MEASURE_SECONDS_SMOOTHING = 10
+  integer(c_int), parameter, public :: SFA_MEASURE_SECONDS_FLIPPING = 11
+  integer(c_int), parameter, public :: SFA_MEASURE_SECONDS_REPAIR = 12
 
   public :: sfa_version_string, sfa_abi_version, sfa_status_string
   public :: sfa_create, sfa_destroy, sfa_last_error

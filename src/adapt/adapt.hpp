@@ -3,6 +3,7 @@
 #pragma once
 
 #include "adapt/flip.hpp"
+#include "adapt/phase_times.hpp"
 #include "adapt/repair_settings.hpp"
 #include "fields/vertex_fields.hpp"
 
@@ -21,14 +22,15 @@ struct AdaptSettings {
 
 struct AdaptCounts {
     int32_t passes = 0, splits = 0, contractions = 0, flips = 0;
+    PhaseTimes seconds;
 };
 
 // Features are detected once, then carried through the call (carried_features.hpp). Each
 // pass: split, contract, flip, then smooth, every step after a fresh analysis of the
-// geometry as it then is; until a pass changes the connectivity of at most 1 in 500
-// vertices or max_passes were made. A
-// closed surface then gets its enclosed volume back (restore_enclosed_volume). The fields
-// (one value set per vertex) follow every step. The mesh stays dense and valid.
+// geometry as it then is; until a pass changes the connectivity of at most 1 in 100
+// vertices or max_passes were made. A closed surface then gets its enclosed volume back
+// (restore_enclosed_volume). The fields (one value set per vertex) follow every step. The
+// mesh stays dense and valid. The seconds of each phase are counted in the result.
 AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings);
 
 } // namespace sfa

@@ -5,8 +5,6 @@
 #include "mesh/parallel.hpp"
 #include "motion/fold_time.hpp"
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
 
@@ -29,16 +27,13 @@ Vec3 tangent_target(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_
     Eigen::Matrix2d sum_metric = Eigen::Matrix2d::Zero();
     Eigen::Vector2d sum_image = Eigen::Vector2d::Zero();
     int count = 0;
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> root;
     mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
         const Eigen::Matrix2d half = 0.5 * (mp.tensor() + tensor_in_frame(analysis.metric[w], mp));
-        root.computeDirect(half);
         sum_metric += half;
-        sum_image += root.operatorSqrt() * (frame.transpose() * (0.5 * (mesh.pos[w] - mesh.pos[v])));
+        sum_image += tensor_sqrt(half) * (frame.transpose() * (0.5 * (mesh.pos[w] - mesh.pos[v])));
         ++count;
     });
-    root.computeDirect(sum_metric / count);
-    return frame * (root.operatorInverseSqrt() * (sum_image / count));
+    return frame * (tensor_inverse_sqrt(sum_metric / count) * (sum_image / count));
 }
 
 // Ridge (or boundary) vertex: moves only along its ridge, with the same equal-metric-length

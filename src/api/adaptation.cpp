@@ -31,9 +31,11 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
         // Work on a copy of the positions and fields; commit only when every sweep succeeded.
         TriMesh mesh = s->mesh;
         std::vector<VertexField> fields = s->fields;
+        PhaseTimes seconds;
         const double volume = enclosed_volume(mesh);
         for (int32_t sweep = 0; sweep < iterations; ++sweep) {
-            const SurfaceAnalysis analysis = current_analysis(s, mesh);
+            const SurfaceAnalysis analysis = timed(seconds.analysis, [&] { return current_analysis(s, mesh); });
+            PhaseClock clock(seconds.smoothing);
             std::vector<Vec3> moved = smoothing_sweep(mesh, analysis);
             fields = fields_at_moved_vertices(mesh, moved, fields);
             mesh.pos.swap(moved);
@@ -42,6 +44,7 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
         }
         s->mesh.pos.swap(mesh.pos);
         s->fields.swap(fields);
+        s->seconds_spent += seconds;
     });
 }
 
@@ -65,7 +68,7 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
                     velocity.values[3 * v + c] = s->velocity[v][c];
             data.push_back(std::move(velocity));
         }
-        adapt_surface(mesh, data, settings);
+        const AdaptCounts counts = adapt_surface(mesh, data, settings);
         const std::string broken = invariant_violation(mesh);
         if (!broken.empty())
             fail(Status::internal, ("the adapted mesh is broken (" + broken + "); the surface is unchanged").c_str());
@@ -80,6 +83,7 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
         s->mesh = std::move(mesh);
         s->fields.swap(data);
         s->velocity.swap(velocity);
+        s->seconds_spent += counts.seconds;
     });
 }
 

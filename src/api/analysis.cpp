@@ -26,12 +26,18 @@ SFA_EXPORT int sfa_measure(const sfa_surface *s, int quantity, double *value)
 {
     return call(s, "sfa_measure", [&] {
         require(value != nullptr, "value is NULL");
-        if (quantity < SFA_MEASURE_VOLUME || quantity > SFA_MEASURE_MAX_NORMAL_TURN) {
+        if (quantity < SFA_MEASURE_VOLUME || quantity > SFA_MEASURE_SECONDS_REPAIR) {
             char message[120];
             std::snprintf(message, sizeof message,
                           "unknown quantity %d (quantities are 0 to %d, enum sfa_measure_quantity)", quantity,
-                          SFA_MEASURE_MAX_EDGE_LENGTH);
+                          SFA_MEASURE_SECONDS_REPAIR);
             fail(Status::argument, message);
+        }
+        switch (quantity) {
+        case SFA_MEASURE_SECONDS_ANALYSIS: *value = s->seconds_spent.analysis; return;
+        case SFA_MEASURE_SECONDS_SMOOTHING: *value = s->seconds_spent.smoothing; return;
+        case SFA_MEASURE_SECONDS_FLIPPING: *value = s->seconds_spent.flipping; return;
+        case SFA_MEASURE_SECONDS_REPAIR: *value = s->seconds_spent.repair; return;
         }
         require_mesh(s);
         const TriMesh &mesh = s->mesh;

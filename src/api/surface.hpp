@@ -4,6 +4,7 @@
 #pragma once
 
 #include "adapt/parameters.hpp"
+#include "adapt/phase_times.hpp"
 #include "fields/vertex_fields.hpp"
 #include "mesh/tri_mesh.hpp"
 
@@ -18,6 +19,7 @@ struct sfa_surface {
     sfa::Parameters params;
     std::vector<sfa::Vec3> velocity; // empty until sfa_set_velocities
     std::vector<sfa::VertexField> fields;
+    sfa::PhaseTimes seconds_spent; // by the successful sfa_smooth and sfa_adapt calls
 
     // A fixed buffer, so that reporting an error (out of memory included) never allocates.
     mutable char last_error[1024] = "";

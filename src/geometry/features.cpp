@@ -36,13 +36,16 @@ std::vector<int8_t> candidate_ranks(const TriMesh &mesh, const std::vector<Quadr
 std::vector<int8_t> promoted_by_edges(const TriMesh &mesh, std::vector<int8_t> candidate,
                                       const std::vector<Vec3> &area_vectors, const FeatureThresholds &thresholds)
 {
+    // Every edge is looked at: compare cosines (no arc tangent). The angle between u and w
+    // reaches the ridge angle where u.w <= cos(ridge angle) |u| |w|.
+    const double cos_ridge = std::cos(thresholds.ridge_angle);
     std::vector<int32_t> sharp(mesh.pos.size(), 0);
     for (int32_t h = 0; h < static_cast<int32_t>(mesh.opp.size()); ++h) {
         const int32_t g = mesh.opp[h];
         if (g >= 0 && g < h)
             continue;
-        if (g < 0 || angle_between(area_vectors[TriMesh::face(h)], area_vectors[TriMesh::face(g)]) >=
-                         thresholds.ridge_angle) {
+        const Vec3 &u = area_vectors[TriMesh::face(h)];
+        if (g < 0 || u.dot(area_vectors[TriMesh::face(g)]) <= cos_ridge * u.norm() * area_vectors[TriMesh::face(g)].norm()) {
             ++sharp[mesh.tail(h)];
             ++sharp[mesh.head(h)];
         }

@@ -21,8 +21,8 @@ Vec3 onto_fitted_surface(const TriMesh &mesh, int32_t v, const VertexMetric &fra
     });
     if (count < 5 || scale2 == 0)
         return target;
-    const double scale = std::sqrt(scale2);
     scale2 /= count;
+    const double scale = std::sqrt(scale2);
     mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
         const Vec3 d = mesh.pos[w] - p;
         const double u = d.dot(frame.major), s = d.dot(frame.minor), h = d.dot(frame.normal);
@@ -31,7 +31,7 @@ Vec3 onto_fitted_surface(const TriMesh &mesh, int32_t v, const VertexMetric &fra
         normal_matrix += basis * basis.transpose();
         right_side += basis * h;
     });
-    const Eigen::LDLT<Matrix5> solver(normal_matrix);
+    const Eigen::LLT<Matrix5> solver(normal_matrix);
     // Neighbours on two lines through v (or fewer directions) cannot fix three
     // coefficients: keep to the tangent plane.
     if (solver.info() != Eigen::Success || !(solver.rcond() > 1e-8))

@@ -13,11 +13,13 @@ constexpr double degrees_per_radian = 180.0 / 3.14159265358979323846;
 double angle_between(const Vec3 &u, const Vec3 &w) { return std::atan2(u.cross(w).norm(), u.dot(w)); }
 } // namespace
 
-double enclosed_volume(const TriMesh &mesh)
+double enclosed_volume(const TriMesh &mesh) { return enclosed_volume(mesh, mesh.pos); }
+
+double enclosed_volume(const TriMesh &mesh, const std::vector<Vec3> &positions)
 {
     double six_volume = 0;
     for (const Triangle &t : mesh.tri)
-        six_volume += mesh.pos[t[0]].dot(mesh.pos[t[1]].cross(mesh.pos[t[2]]));
+        six_volume += positions[t[0]].dot(positions[t[1]].cross(positions[t[2]]));
     return six_volume / 6;
 }
 

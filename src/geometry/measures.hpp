@@ -9,6 +9,8 @@ namespace sfa {
 // Signed volume sum over triangles of a.(b x c)/6: positive for a closed surface whose
 // normals point out; for an open surface the same sum, which depends on the origin.
 double enclosed_volume(const TriMesh &mesh);
+// The same with the mesh's vertices at `positions` instead.
+double enclosed_volume(const TriMesh &mesh, const std::vector<Vec3> &positions);
 
 // The gradient of enclosed_volume with respect to vertex v's position: moving v alone by d
 // changes the volume by exactly gradient.d, since each term a.(b x c) is linear in v. It

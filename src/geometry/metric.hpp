@@ -47,6 +47,12 @@ Eigen::Matrix2d frame_rotation(const Eigen::Matrix<double, 3, 2> &frame_q, const
 // The metric of q expressed in p's tangent frame: R^T M_q R.
 Eigen::Matrix2d tensor_in_frame(const VertexMetric &q, const VertexMetric &p);
 
+// The square root of a 2x2 symmetric positive definite tensor, in closed form:
+// sqrt(M) = (M + s I) / t with s = sqrt(det M), t = sqrt(trace M + 2 s).
+Eigen::Matrix2d tensor_sqrt(const Eigen::Matrix2d &m);
+// Its inverse, adj(M + s I) / (s t).
+Eigen::Matrix2d tensor_inverse_sqrt(const Eigen::Matrix2d &m);
+
 // Eq. 4 at p: sqrt(d^T T_p M_half T_p^T d), d = p - q, M_half = (M_p + M_q in p's frame) / 2.
 double metric_edge_length(const Vec3 &p_position, const VertexMetric &p, const Vec3 &q_position, const VertexMetric &q);
 

@@ -160,7 +160,7 @@ static void bad_arguments_and_state(void **state)
     (void)state;
     sfa_surface *s = make_cube_surface();
     double v = 77;
-    const int unknown[] = {-1, 9, 1000, INT32_MIN};
+    const int unknown[] = {-1, SFA_MEASURE_SECONDS_REPAIR + 1, 1000, INT32_MIN};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; ++i) {
         assert_error(s, sfa_measure(s, unknown[i], &v), SFA_ERR_ARGUMENT, "");
         assert_true(v == 77);
@@ -177,6 +177,44 @@ static void bad_arguments_and_state(void **state)
     sfa_destroy(s);
 }
 
+static double phase_seconds(const sfa_surface *s)
+{
+    double total = 0;
+    for (int q = SFA_MEASURE_SECONDS_ANALYSIS; q <= SFA_MEASURE_SECONDS_REPAIR; ++q) {
+        double seconds = -1;
+        assert_int_equal(sfa_measure(s, q, &seconds), SFA_OK);
+        assert_true(seconds >= 0);
+        total += seconds;
+    }
+    return total;
+}
+
+// The phase clocks start at zero, need no mesh, and grow with every successful call.
+static void phase_seconds_accumulate(void **state)
+{
+    (void)state;
+    sfa_surface *s = NULL;
+    assert_int_equal(sfa_create(&s), SFA_OK);
+    assert_true(phase_seconds(s) == 0);
+    sfa_destroy(s);
+
+    sfa_mesh_data sphere = shape_icosphere(3, 1.0);
+    s = make_surface(&sphere, 0);
+    mesh_free(&sphere);
+    double repair = 0, analysis = 0;
+    assert_int_equal(sfa_smooth(s, 2), SFA_OK);
+    assert_int_equal(sfa_measure(s, SFA_MEASURE_SECONDS_REPAIR, &repair), SFA_OK);
+    assert_true(repair == 0); // smoothing repairs nothing
+    const double after_smooth = phase_seconds(s);
+    assert_true(after_smooth > 0);
+    assert_int_equal(sfa_adapt(s), SFA_OK);
+    assert_int_equal(sfa_measure(s, SFA_MEASURE_SECONDS_REPAIR, &repair), SFA_OK);
+    assert_int_equal(sfa_measure(s, SFA_MEASURE_SECONDS_ANALYSIS, &analysis), SFA_OK);
+    assert_true(repair > 0 && analysis > 0);
+    assert_true(phase_seconds(s) > after_smooth);
+    sfa_destroy(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -189,6 +227,7 @@ int main(void)
         cmocka_unit_test(open_flat_patch),
         cmocka_unit_test(folded_patch_turns_by_almost_180_degrees),
         cmocka_unit_test(bad_arguments_and_state),
+        cmocka_unit_test(phase_seconds_accumulate),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

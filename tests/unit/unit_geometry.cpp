@@ -106,6 +106,21 @@ void metric_length_scales_with_direction(void **)
     assert_float_equal(metric_edge_length(Vec3(0, 0, 0), m, Vec3(0.5, 0, 0), m), 0.5 * std::sqrt(m.m_major), 1e-14);
 }
 
+void tensor_square_roots_match_the_eigen_decomposition(void **)
+{
+    // Rotated diagonal tensors from isotropic to the metric's strongest anisotropy.
+    for (const double ratio : {1.0, 1.7, 30.0, 1e4})
+        for (const double angle : {0.0, 0.3, 1.2}) {
+            const Eigen::Matrix2d r = Eigen::Rotation2Dd(angle).toRotationMatrix();
+            const Eigen::Matrix2d m = r * Eigen::Vector2d(2.5 * ratio, 2.5).asDiagonal() * r.transpose();
+            const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(m);
+            const double tolerance = 1e-14 * std::sqrt(ratio);
+            assert_true((tensor_sqrt(m) - eigen.operatorSqrt()).norm() < tolerance * m.norm());
+            assert_true((tensor_inverse_sqrt(m) - eigen.operatorInverseSqrt()).norm() < tolerance);
+            assert_true((tensor_sqrt(m) * tensor_sqrt(m) - m).norm() < 1e-14 * m.norm());
+        }
+}
+
 } // namespace
 
 int main()
@@ -117,6 +132,7 @@ int main()
         cmocka_unit_test(frame_rotation_is_exact_for_a_shared_normal),
         cmocka_unit_test(frame_rotation_stays_a_rotation_when_normals_differ),
         cmocka_unit_test(metric_length_scales_with_direction),
+        cmocka_unit_test(tensor_square_roots_match_the_eigen_decomposition),
     };
     return cmocka_run_group_tests_name("unit_geometry", tests, nullptr, nullptr);
 }
