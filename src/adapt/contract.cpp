@@ -6,6 +6,7 @@
 #include "geometry/quadric_error.hpp"
 #include "mesh/compact.hpp"
 #include "mesh/edge_collapse.hpp"
+#include "mesh/parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -136,13 +137,17 @@ int32_t contraction_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const R
                          CarriedFeatures &features, std::vector<VertexField> &fields)
 {
     RidgeSet &ridges = features.ridges;
+    // Judging is independent per edge (in parallel); collecting is in half-edge order.
+    const int32_t halfedges = 3 * mesh.num_triangles();
+    std::vector<char> wanted(halfedges, 0);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t h = 0; h < halfedges; ++h)
+        if (mesh.opp[h] < 0 || mesh.opp[h] > h) // each edge once
+            wanted[h] = wants_contraction(mesh, analysis, h, settings);
     std::vector<Candidate> candidates;
-    for (int32_t h = 0; h < 3 * mesh.num_triangles(); ++h) {
-        if (mesh.opp[h] >= 0 && mesh.opp[h] < h)
-            continue; // each edge once
-        if (wants_contraction(mesh, analysis, h, settings))
+    for (int32_t h = 0; h < halfedges; ++h)
+        if (wanted[h])
             candidates.push_back({(mesh.pos[mesh.head(h)] - mesh.pos[mesh.tail(h)]).norm(), mesh.tail(h), mesh.head(h)});
-    }
     // Shortest first (§4.2); ties in vertex order.
     std::sort(candidates.begin(), candidates.end(), [](const Candidate &x, const Candidate &y) {
         return std::tie(x.length, x.a, x.b) < std::tie(y.length, y.a, y.b);

@@ -5,6 +5,7 @@
 #include "geometry/edge_neighbourhood.hpp"
 #include "geometry/quadric_error.hpp"
 #include "mesh/edge_split.hpp"
+#include "mesh/parallel.hpp"
 
 #include <algorithm>
 #include <tuple>
@@ -93,14 +94,17 @@ struct Candidate {
 int32_t splitting_pass(TriMesh &mesh, const RepairSettings &settings, CarriedFeatures &features,
                        std::vector<VertexField> &fields)
 {
+    // Judging is independent per edge (in parallel); collecting is in half-edge order.
+    const int32_t halfedges = 3 * mesh.num_triangles();
+    std::vector<char> wanted(halfedges, 0);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t h = 0; h < halfedges; ++h)
+        if (mesh.opp[h] < 0 || mesh.opp[h] > h) // each edge once
+            wanted[h] = wants_split(edge_neighbourhood(mesh, h), settings);
     std::vector<Candidate> candidates;
-    for (int32_t h = 0; h < 3 * mesh.num_triangles(); ++h) {
-        if (mesh.opp[h] >= 0 && mesh.opp[h] < h)
-            continue; // each edge once
-        const EdgeNeighbourhood n = edge_neighbourhood(mesh, h);
-        if (wants_split(n, settings))
-            candidates.push_back({n.length, mesh.tail(h), mesh.head(h)});
-    }
+    for (int32_t h = 0; h < halfedges; ++h)
+        if (wanted[h])
+            candidates.push_back({(mesh.pos[mesh.head(h)] - mesh.pos[mesh.tail(h)]).norm(), mesh.tail(h), mesh.head(h)});
     // Longest first (§4.1); ties in vertex order, so the result never depends on the order
     // the candidates were found in.
     std::sort(candidates.begin(), candidates.end(), [](const Candidate &x, const Candidate &y) {

@@ -3,11 +3,11 @@
 #include "mesh/parallel.hpp"
 
 namespace sfa {
+namespace {
 
-SurfaceAnalysis analyze_geometry(const TriMesh &mesh, const MetricBounds &bounds)
+SurfaceAnalysis geometry_of(const TriMesh &mesh, const std::vector<Vec3> &area_vectors, const MetricBounds &bounds)
 {
     SurfaceAnalysis analysis;
-    const std::vector<Vec3> area_vectors = face_area_vectors(mesh);
     analysis.quadric = vertex_quadrics(mesh, area_vectors);
 
     analysis.eigen.resize(mesh.pos.size());
@@ -22,10 +22,18 @@ SurfaceAnalysis analyze_geometry(const TriMesh &mesh, const MetricBounds &bounds
     return analysis;
 }
 
+} // namespace
+
+SurfaceAnalysis analyze_geometry(const TriMesh &mesh, const MetricBounds &bounds)
+{
+    return geometry_of(mesh, face_area_vectors(mesh), bounds);
+}
+
 SurfaceAnalysis analyze_surface(const TriMesh &mesh, const FeatureThresholds &thresholds, const MetricBounds &bounds)
 {
-    SurfaceAnalysis analysis = analyze_geometry(mesh, bounds);
-    analysis.features = detect_features(mesh, analysis.eigen, face_area_vectors(mesh), thresholds);
+    const std::vector<Vec3> area_vectors = face_area_vectors(mesh);
+    SurfaceAnalysis analysis = geometry_of(mesh, area_vectors, bounds);
+    analysis.features = detect_features(mesh, analysis.eigen, area_vectors, thresholds);
     return analysis;
 }
 
