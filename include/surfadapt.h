@@ -141,7 +141,17 @@ enum sfa_param {
     /** Threads of the per-vertex and per-edge loops (OpenMP): 0 (default) uses OpenMP's
         default (OMP_NUM_THREADS, else every core); n >= 1 uses at most n, so that an MPI
         host can keep one thread per rank. A whole number. Results never depend on it. */
-    SFA_PARAM_THREADS = 17
+    SFA_PARAM_THREADS = 17,
+    /** Denoising weight in [0, 1] (paper §5.1, §5.2.2), default 0 (off). Each smoothing
+        sweep (sfa_smooth(), and those of sfa_adapt()) then also moves every smooth vertex
+        along its normal by up to half an umbrella step of normal diffusion, scaled by this
+        weight and by how noisy the vertex looks to the quadric analysis (the ratio of its
+        second to first eigenvalue as a fraction of the one that would make it a ridge):
+        jagged fans are flattened, gently curved ones barely move, features never. On a
+        closed surface the enclosed volume is restored after each sweep, so the motion
+        removes noise without shrinking the body; an open surface is not corrected. For
+        flows that grow noise, like the second half of the Enright test. */
+    SFA_PARAM_DENOISE = 18
 };
 
 /** Quantities for sfa_measure(). */

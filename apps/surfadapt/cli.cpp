@@ -96,6 +96,21 @@ double positive_option(int argc, char **argv, int &i)
     return value;
 }
 
+double fraction_option(int argc, char **argv, int &i)
+{
+    if (i + 1 >= argc) {
+        std::fprintf(stderr, "surfadapt: %s needs a value\n", argv[i]);
+        std::exit(2);
+    }
+    char *end = nullptr;
+    const double value = std::strtod(argv[++i], &end);
+    if (*end != '\0' || !(value >= 0 && value <= 1)) {
+        std::fprintf(stderr, "surfadapt: %s must be a number from 0 to 1, got '%s'\n", argv[i - 1], argv[i]);
+        std::exit(2);
+    }
+    return value;
+}
+
 namespace {
 
 double angle_at(const double *a, const double *b, const double *c)

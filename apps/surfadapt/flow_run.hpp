@@ -22,6 +22,7 @@ struct FlowRun {
     std::string out_dir;  // empty: no files
     int report_every;     // table rows (and saved steps)
     bool json = false;    // also print the summary as one JSON line (for benchmarks)
+    double denoise = 0;   // SFA_PARAM_DENOISE
 };
 
 struct FlowResult {

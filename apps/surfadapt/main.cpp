@@ -23,13 +23,15 @@ const char *const usage =
     "        DIR/remeshed.vtk (DIR defaults to .); then run the Enright test as 'enright'\n"
     "        does, writing the time series to DIR/enright\n"
     "  enright [--resolution N] [--dt DT] [--steps S] [--adapt-every K] [--isotropic]\n"
-    "          [--report-every R] [--out DIR] [--json]\n"
+    "          [--denoise W] [--report-every R] [--out DIR] [--json]\n"
     "        the Enright test (paper §5.2.2): a sphere of radius 0.15 at (0.35, 0.35, 0.35)\n"
     "        of 10 N^2 + 2 vertices (N = 48: 23,042) through the deformation field of period\n"
     "        T = 3 with time step DT (0.015) for S steps (T / DT); every step RK4 advection\n"
     "        with fold control and one smoothing sweep, sfa_adapt every K steps (4; 0 never)\n"
-    "        or after a step the fold control cut to less than half. Prints a table every R\n"
-    "        steps (20) and, with --out, writes DIR/surface.pvd and one .vtu per table row;\n"
+    "        or after a step the fold control cut to less than half; --isotropic adapts with\n"
+    "        the identity metric, --denoise W sets SFA_PARAM_DENOISE (0 to 1; default 0).\n"
+    "        Prints a table every R steps (20) and, with --out, writes DIR/surface.pvd and\n"
+    "        one .vtu per table row;\n"
     "        --json adds the summary (times per phase) as one JSON line\n"
     "  vortex [--period 2|6] [same options as enright]\n"
     "        the vortex flow (paper §5.2.1, §5.2.3): a sphere of radius 0.15 at\n"
@@ -46,7 +48,7 @@ const char *const usage =
     "        VTK file for ParaView: triangles (POLYGONS) and ridge edges (LINES) with\n"
     "        cell data 'ridge', point data 'rank' (0 smooth, 1 ridge, 2 corner),\n"
     "        'aspect_ratio', 'long_direction' and 'normal' of the anisotropic metric\n"
-    "  --help\n"
+    "  --help, or --help after any command\n"
     "        this text\n";
 
 int main(int argc, char **argv)
@@ -55,6 +57,11 @@ int main(int argc, char **argv)
         std::fputs(usage, argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
     }
+    for (int i = 2; i < argc; ++i)
+        if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
+            std::fputs(usage, stdout);
+            return 0;
+        }
     const std::string command = argv[1];
     if (command == "demo")
         return demo_command(argc, argv);

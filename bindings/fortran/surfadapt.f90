@@ -55,6 +55,7 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_PARAM_RIDGE_TURN_ANGLE = 15
   integer(c_int), parameter, public :: SFA_PARAM_FLIP_DIHEDRAL_ANGLE = 16
   integer(c_int), parameter, public :: SFA_PARAM_THREADS = 17
+  integer(c_int), parameter, public :: SFA_PARAM_DENOISE = 18
 
   ! --------------------------------------------------- enum sfa_measure_quantity
   integer(c_int), parameter, public :: SFA_MEASURE_VOLUME = 0

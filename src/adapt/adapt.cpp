@@ -46,7 +46,7 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
         for (int sweep = 0; sweep < settings.smoothing_sweeps; ++sweep) {
             const SurfaceAnalysis before_sweep = analysis();
             PhaseClock clock(seconds.smoothing);
-            std::vector<Vec3> moved = smoothing_sweep(mesh, before_sweep);
+            std::vector<Vec3> moved = smoothing_sweep(mesh, before_sweep, settings.denoise);
             fields = fields_at_moved_vertices(mesh, moved, fields);
             mesh.pos.swap(moved);
         }

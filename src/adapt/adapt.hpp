@@ -18,6 +18,7 @@ struct AdaptSettings {
     RepairSettings repair;
     int max_passes;       // iterations at most
     int smoothing_sweeps; // per iteration
+    double denoise;       // weight in every sweep (smoothing_sweep)
 };
 
 struct AdaptCounts {

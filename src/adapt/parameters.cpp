@@ -8,7 +8,7 @@
 namespace sfa {
 namespace {
 
-enum class Kind { at_least, open_interval, left_open, right_open, flag, whole_number };
+enum class Kind { at_least, open_interval, left_open, right_open, closed_interval, flag, whole_number };
 
 struct Spec {
     const char *name;
@@ -41,6 +41,7 @@ const Spec specs[] = {
     {"SFA_PARAM_RIDGE_TURN_ANGLE", 40, Kind::open_interval, 0, 180},
     {"SFA_PARAM_FLIP_DIHEDRAL_ANGLE", 20, Kind::open_interval, 0, 180},
     {"SFA_PARAM_THREADS", 0, Kind::whole_number, 0, 4096},
+    {"SFA_PARAM_DENOISE", 0, Kind::closed_interval, 0, 1},
 };
 static_assert(sizeof specs / sizeof specs[0] == static_cast<size_t>(Param::count), "one spec per key");
 
@@ -51,6 +52,7 @@ bool in_range(const Spec &spec, double v)
     case Kind::open_interval: return v > spec.lo && v < spec.hi;
     case Kind::left_open: return v > spec.lo && v <= spec.hi;
     case Kind::right_open: return v >= spec.lo && v < spec.hi;
+    case Kind::closed_interval: return v >= spec.lo && v <= spec.hi;
     case Kind::flag: return v == 0 || v == 1;
     case Kind::whole_number: return v >= spec.lo && v <= spec.hi && v == std::floor(v);
     }
@@ -69,6 +71,7 @@ void describe_range(const Spec &spec, char *out, size_t size)
         break;
     case Kind::left_open: std::snprintf(out, size, "in (%g, %g]", spec.lo, spec.hi); break;
     case Kind::right_open: std::snprintf(out, size, "in [%g, %g)", spec.lo, spec.hi); break;
+    case Kind::closed_interval: std::snprintf(out, size, "in [%g, %g]", spec.lo, spec.hi); break;
     case Kind::flag: std::snprintf(out, size, "0 or 1"); break;
     case Kind::whole_number: std::snprintf(out, size, "a whole number in [%g, %g]", spec.lo, spec.hi); break;
     }

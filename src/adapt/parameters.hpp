@@ -25,6 +25,7 @@ enum class Param : int {
     ridge_turn_angle,
     flip_dihedral_angle,
     threads,
+    denoise,
     count
 };
 

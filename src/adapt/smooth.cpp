@@ -71,12 +71,43 @@ Vec3 ridge_motion(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t 
     return along_circle(circle, p, direction, distance) - p;
 }
 
+// Umbrella vectors: the mean of each vertex's neighbours minus the vertex.
+std::vector<Vec3> umbrella_vectors(const TriMesh &mesh)
+{
+    std::vector<Vec3> umbrella(mesh.pos.size(), Vec3::Zero());
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
+        Vec3 sum = Vec3::Zero();
+        int count = 0;
+        mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
+            sum += mesh.pos[w];
+            ++count;
+        });
+        umbrella[v] = sum / count - mesh.pos[v];
+    }
+    return umbrella;
+}
+
+// The denoising motion of a smooth vertex (smooth.hpp): along the normal only.
+Vec3 denoising_motion(const TriMesh &mesh, const std::vector<Vec3> &umbrella, const Vec3 &normal, int32_t v,
+                      double weight)
+{
+    Vec3 mean = Vec3::Zero();
+    int count = 0;
+    mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
+        mean += umbrella[w];
+        ++count;
+    });
+    return weight / 4 * normal.dot(umbrella[v] - mean / count) * normal;
+}
+
 } // namespace
 
-std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &analysis)
+std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &analysis, double denoise)
 {
     const int32_t n = mesh.num_vertices();
     std::vector<Vec3> motion(n, Vec3::Zero());
+    const std::vector<Vec3> umbrella = denoise > 0 ? umbrella_vectors(mesh) : std::vector<Vec3>();
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < n; ++v) {
         const int rank = analysis.features.rank[v];
@@ -85,6 +116,8 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
         if (rank == 0) {
             const Vec3 target = mesh.pos[v] + tangent_target(mesh, analysis, v);
             motion[v] = onto_fitted_surface(mesh, v, analysis.metric[v], target) - mesh.pos[v];
+            if (denoise > 0)
+                motion[v] += denoising_motion(mesh, umbrella, analysis.metric[v].normal, v, denoise);
         } else {
             motion[v] = ridge_motion(mesh, analysis, v);
         }

@@ -14,6 +14,15 @@ namespace sfa {
 // Returns the new positions. The enclosed volume is the caller's to restore
 // (restore_enclosed_volume): motion along the fitted surface still changes it a little (a
 // jittered unit sphere gains 3e-4 in 20 sweeps as its vertices even out).
-std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &analysis);
+//
+// Denoising (§5.1, §5.2.2; SFA_PARAM_DENOISE): with weight w in (0, 1] a smooth vertex
+// also moves along its normal n by (w / 4) n.(U_v - mean of U_q over its neighbours q),
+// U the umbrella vector (mean of the neighbours minus the vertex): a Jacobi step of
+// bi-Laplacian normal diffusion. Noise from vertex to vertex is damped by up to half per
+// sweep, while a smooth surface, whose umbrella vectors vary slowly, stays where it is
+// (the plain umbrella step would shrink every curved region, and volume restoration would
+// then round the body off). The caller's volume restoration gives back the volume the
+// noise took with it.
+std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &analysis, double denoise = 0);
 
 } // namespace sfa

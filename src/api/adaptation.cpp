@@ -36,7 +36,7 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
         for (int32_t sweep = 0; sweep < iterations; ++sweep) {
             const SurfaceAnalysis analysis = timed(seconds.analysis, [&] { return current_analysis(s, mesh); });
             PhaseClock clock(seconds.smoothing);
-            std::vector<Vec3> moved = smoothing_sweep(mesh, analysis);
+            std::vector<Vec3> moved = smoothing_sweep(mesh, analysis, s->params.get(Param::denoise));
             fields = fields_at_moved_vertices(mesh, moved, fields);
             mesh.pos.swap(moved);
             if (mesh.is_closed())
@@ -55,7 +55,8 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
         const Parameters &p = s->params;
         const double edge_length = p.get(Param::edge_length) > 0 ? p.get(Param::edge_length) : s->mean_edge_length_at_set;
         const AdaptSettings settings{feature_thresholds(p), metric_bounds(p), p.get(Param::flip_dihedral_angle) * radians,
-                                     repair_settings(p, edge_length), max_adapt_passes, smoothing_sweeps_per_pass};
+                                     repair_settings(p, edge_length), max_adapt_passes, smoothing_sweeps_per_pass,
+                                     p.get(Param::denoise)};
 
         // Work on copies; the velocities travel as one more field. Commit only at the end.
         TriMesh mesh = s->mesh;

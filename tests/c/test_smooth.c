@@ -56,6 +56,77 @@ static void jittered_sphere_gets_better_angles_and_keeps_volume_and_shape(void *
     sfa_destroy(s);
 }
 
+/* Root mean square of |p| - R over the vertices, R the radius of the sphere with the
+ * surface's volume: how far from a sphere the surface is. */
+static double roughness(const sfa_surface *s)
+{
+    const double radius = cbrt(3 * measure(s, SFA_MEASURE_VOLUME) / (4 * acos(-1.0)));
+    sfa_mesh_data out = read_back(s);
+    double sum = 0;
+    for (int32_t v = 0; v < out.nverts; ++v) {
+        const double *p = out.xyz + 3 * v, r = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - radius;
+        sum += r * r;
+    }
+    const double rms = sqrt(sum / out.nverts);
+    mesh_free(&out);
+    return rms;
+}
+
+/* SFA_PARAM_DENOISE (paper §5.1, §5.2.2): a unit sphere whose vertices were moved radially
+ * by up to a twentieth of an edge. Smoothing alone keeps that noise (each vertex is lifted
+ * onto a surface fitted through itself); with denoising its rough part goes, and the
+ * volume stays. A smooth spheroid, meanwhile, keeps its shape. */
+static void denoising_removes_radial_noise_and_keeps_volume(void **state)
+{
+    (void)state;
+    sfa_mesh_data m = shape_icosphere(4, 1.0);
+    const double amplitude = mesh_mean_edge_length(&m) / 20;
+    uint64_t seed = 11;
+    for (int32_t v = 0; v < m.nverts; ++v) {
+        const double scale = 1 + amplitude * jitter(&seed);
+        for (int k = 0; k < 3; ++k)
+            m.xyz[3 * v + k] *= scale;
+    }
+    double rough[2], volume_change[2];
+    for (int denoise = 0; denoise <= 1; ++denoise) {
+        sfa_surface *s = make_surface(&m, 0);
+        assert_int_equal(sfa_set_param(s, SFA_PARAM_DENOISE, denoise), SFA_OK);
+        const double volume = measure(s, SFA_MEASURE_VOLUME), before = roughness(s);
+        assert_int_equal(sfa_smooth(s, 10), SFA_OK);
+        rough[denoise] = roughness(s) / before;
+        volume_change[denoise] = fabs(measure(s, SFA_MEASURE_VOLUME) - volume) / volume;
+        sfa_destroy(s);
+    }
+    print_message("radial noise left after 10 sweeps: %.3f without denoising, %.3f with; volume change %.1e, "
+                  "%.1e\n",
+                  rough[0], rough[1], volume_change[0], volume_change[1]);
+    assert_true(rough[0] > 0.9);
+    assert_true(rough[1] < 0.6);
+    assert_true(volume_change[0] < 1e-13 && volume_change[1] < 1e-13);
+    mesh_free(&m);
+
+    /* The spheroid x^2 + y^2 + (z / 0.6)^2 = 1: how far off it 10 denoising sweeps leave
+     * the vertices, in edge lengths. */
+    m = shape_icosphere(4, 1.0);
+    for (int32_t v = 0; v < m.nverts; ++v)
+        m.xyz[3 * v + 2] *= 0.6;
+    const double edge = mesh_mean_edge_length(&m);
+    sfa_surface *s = make_surface(&m, 0);
+    assert_int_equal(sfa_set_param(s, SFA_PARAM_DENOISE, 1), SFA_OK);
+    assert_int_equal(sfa_smooth(s, 10), SFA_OK);
+    sfa_mesh_data out = read_back(s);
+    double off = 0;
+    for (int32_t v = 0; v < out.nverts; ++v) {
+        const double *p = out.xyz + 3 * v;
+        off = fmax(off, fabs(sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] / 0.36) - 1));
+    }
+    print_message("spheroid: off its surface by %.2e edges after 10 denoising sweeps\n", off / edge);
+    assert_true(off < 0.01 * edge);
+    mesh_free(&out);
+    mesh_free(&m);
+    sfa_destroy(s);
+}
+
 /* A 2 x 1 x 0.5 box with face vertices jittered in their planes and edge vertices along
  * their edges: corners stay put, edge vertices on their lines, face vertices on their
  * planes, the volume is unchanged, the angles improve. */
@@ -212,6 +283,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(jittered_sphere_gets_better_angles_and_keeps_volume_and_shape),
         cmocka_unit_test(jittered_box_keeps_corners_edges_planes_and_volume),
+        cmocka_unit_test(denoising_removes_radial_noise_and_keeps_volume),
         cmocka_unit_test(linear_field_stays_linear_on_a_flat_patch),
         cmocka_unit_test(smoothing_is_deterministic_for_any_thread_count),
         cmocka_unit_test(nothing_lost_when_memory_runs_out),

@@ -36,6 +36,14 @@ check "vortex: volume within 0.5 %, no fold" summary_ok "$work/vortex.txt"
 check "vortex --json: the summary as one JSON line with the phase times" \
   grep -q '^{"bench":"flow","flow":"Vortex flow, T = 2",.*"advect_s":.*"adapt_s":' "$work/vortex.txt"
 
+check "enright --denoise 1 (coarse, 60 steps) exits 0" \
+  sh -c "'$tool' enright --resolution 10 --steps 60 --report-every 60 --denoise 1 >'$work/denoised.txt'"
+cat "$work/denoised.txt"
+check "enright --denoise 1: volume within 0.5 %, no fold" summary_ok "$work/denoised.txt"
+
+check "--help after a command prints the usage and exits 0" \
+  sh -c "'$tool' vortex --help | grep -q -- '--denoise W'"
+check "a denoising weight outside [0, 1] is refused" sh -c "'$tool' enright --denoise 2 2>/dev/null; [ \$? -eq 2 ]"
 check "vortex refuses a period other than 2 or 6" \
   sh -c "'$tool' vortex --period 3 2>/dev/null; [ \$? -eq 2 ]"
 check "an unknown option is refused" sh -c "'$tool' enright --bogus 2>/dev/null; [ \$? -eq 2 ]"

@@ -13,8 +13,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Number of parameter keys of the API (SFA_PARAM_EDGE_LENGTH .. SFA_PARAM_THREADS). */
-#define SHAPES_NPARAMS 18
+/* Number of parameter keys of the API (SFA_PARAM_EDGE_LENGTH .. SFA_PARAM_DENOISE). */
+#define SHAPES_NPARAMS 19
 
 /* [0,1]^3: 8 vertices, 12 triangles, each face split along one diagonal. */
 sfa_mesh_data shape_unit_cube(void);
