@@ -180,15 +180,20 @@ enum sfa_measure_quantity {
     SFA_MEASURE_MAX_NORMAL_TURN = 8,
     /** Wall-clock seconds the successful sfa_smooth() and sfa_adapt() calls on this handle
         have spent, since sfa_create(), in surface analysis (quadrics, metric, features).
-        With the next three, where the time of a run goes; the one quantity that does
-        not need a mesh set, and that differs from run to run. */
+        With the next three, where the time of a run goes; the quantities that do not
+        need a mesh set, and that differ from run to run. */
     SFA_MEASURE_SECONDS_ANALYSIS = 9,
     /** The same, in smoothing sweeps (with their field transfer and volume restoration). */
     SFA_MEASURE_SECONDS_SMOOTHING = 10,
     /** The same, in flipping passes. */
     SFA_MEASURE_SECONDS_FLIPPING = 11,
     /** The same, in splitting and contraction passes. */
-    SFA_MEASURE_SECONDS_REPAIR = 12
+    SFA_MEASURE_SECONDS_REPAIR = 12,
+    /** Pairs of triangles that share no vertex yet intersect (touching counts): 0 unless
+        the surface passes through itself, as where it was folded over or two parts
+        collided. A sharp edge or cusp, however near 180 its ::SFA_MEASURE_MAX_NORMAL_TURN,
+        counts nothing. Costs about a sort of the triangles. */
+    SFA_MEASURE_SELF_INTERSECTIONS = 13
 };
 
 /** One adaptive surface. Opaque; create with sfa_create(), free with sfa_destroy(). */

@@ -81,7 +81,11 @@ int int_option(int argc, char **argv, int &i, int lo, int hi)
     return static_cast<int>(value);
 }
 
-double positive_option(int argc, char **argv, int &i)
+namespace {
+
+// The number after option argv[i] (i is advanced) if ok(number), else exit(2) naming `rule`.
+template <class Ok>
+double number_option(int argc, char **argv, int &i, Ok &&ok, const char *rule)
 {
     if (i + 1 >= argc) {
         std::fprintf(stderr, "surfadapt: %s needs a value\n", argv[i]);
@@ -89,26 +93,23 @@ double positive_option(int argc, char **argv, int &i)
     }
     char *end = nullptr;
     const double value = std::strtod(argv[++i], &end);
-    if (*end != '\0' || !(value > 0) || !std::isfinite(value)) {
-        std::fprintf(stderr, "surfadapt: %s must be a positive number, got '%s'\n", argv[i - 1], argv[i]);
+    if (*end != '\0' || !std::isfinite(value) || !ok(value)) {
+        std::fprintf(stderr, "surfadapt: %s must be %s, got '%s'\n", argv[i - 1], rule, argv[i]);
         std::exit(2);
     }
     return value;
 }
 
+} // namespace
+
+double positive_option(int argc, char **argv, int &i)
+{
+    return number_option(argc, argv, i, [](double v) { return v > 0; }, "a positive number");
+}
+
 double fraction_option(int argc, char **argv, int &i)
 {
-    if (i + 1 >= argc) {
-        std::fprintf(stderr, "surfadapt: %s needs a value\n", argv[i]);
-        std::exit(2);
-    }
-    char *end = nullptr;
-    const double value = std::strtod(argv[++i], &end);
-    if (*end != '\0' || !(value >= 0 && value <= 1)) {
-        std::fprintf(stderr, "surfadapt: %s must be a number from 0 to 1, got '%s'\n", argv[i - 1], argv[i]);
-        std::exit(2);
-    }
-    return value;
+    return number_option(argc, argv, i, [](double v) { return v >= 0 && v <= 1; }, "a number from 0 to 1");
 }
 
 namespace {

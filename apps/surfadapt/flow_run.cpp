@@ -44,17 +44,19 @@ int run_flow(const FlowRun &run, FlowResult &result)
                 "every %d steps, denoising %g\n\n",
                 run.title, run.radius, run.centre[0], run.centre[1], run.centre[2], nverts, run.period, run.dt,
                 run.steps, run.isotropic ? "isotropic" : "anisotropic", run.adapt_every, run.denoise);
-    std::printf("%5s %6s %9s %10s %13s %10s %9s %9s %9s %8s\n", "step", "t", "vertices", "triangles", "volume err %",
-                "area ratio", "min angle", "max angle", "max turn", "seconds");
+    std::printf("%5s %6s %9s %10s %13s %10s %9s %9s %9s %9s %8s\n", "step", "t", "vertices", "triangles",
+                "volume err %", "area ratio", "min angle", "max angle", "max turn", "crossings", "seconds");
     TimeSeries series(run.out_dir, "surface");
     std::string error;
     const auto report = [&](int step, double t) {
         int32_t v = 0, tcount = 0;
         sfa_get_counts(s, &v, &tcount);
-        std::printf("%5d %6.3f %9d %10d %13.5f %10.3f %9.3f %9.3f %9.2f %8.2f\n", step, t, v, tcount,
+        const int crossings = static_cast<int>(measure(s, SFA_MEASURE_SELF_INTERSECTIONS));
+        result.max_self_intersections = std::max(result.max_self_intersections, crossings);
+        std::printf("%5d %6.3f %9d %10d %13.5f %10.3f %9.3f %9.3f %9.2f %9d %8.2f\n", step, t, v, tcount,
                     100 * (measure(s, SFA_MEASURE_VOLUME) - volume0) / volume0, measure(s, SFA_MEASURE_AREA) / area0,
                     measure(s, SFA_MEASURE_MIN_ANGLE), measure(s, SFA_MEASURE_MAX_ANGLE),
-                    measure(s, SFA_MEASURE_MAX_NORMAL_TURN), result.seconds);
+                    measure(s, SFA_MEASURE_MAX_NORMAL_TURN), crossings, result.seconds);
         std::fflush(stdout);
         return run.out_dir.empty() || series.save(s, t, error);
     };
@@ -113,20 +115,21 @@ int run_flow(const FlowRun &run, FlowResult &result)
     result.flipping_seconds = measure(s, SFA_MEASURE_SECONDS_FLIPPING);
     result.repair_seconds = measure(s, SFA_MEASURE_SECONDS_REPAIR);
     std::printf("\nvolume error at the end %.4f %% (worst %.4f %%), area up to x%.2f, up to %d vertices, largest "
-                "normal turn %.1f deg\n%.1f s: advection %.1f s, sfa_smooth %.1f s, sfa_adapt %.1f s; inside "
+                "normal turn %.1f deg, self-intersections at most %d\n%.1f s: advection %.1f s, sfa_smooth %.1f s, sfa_adapt %.1f s; inside "
                 "these, analysis %.1f s, smoothing %.1f s, flipping %.1f s, splitting and contraction %.1f s\n",
                 100 * result.volume_error, 100 * result.worst_volume_error, result.max_area_ratio, result.max_vertices,
-                result.max_normal_turn, result.seconds, result.advect_seconds, result.smooth_seconds,
-                result.adapt_seconds, result.analysis_seconds, result.smoothing_seconds, result.flipping_seconds,
+                result.max_normal_turn, result.max_self_intersections, result.seconds, result.advect_seconds,
+                result.smooth_seconds, result.adapt_seconds, result.analysis_seconds, result.smoothing_seconds, result.flipping_seconds,
                 result.repair_seconds);
     if (run.json)
         std::printf("{\"bench\":\"flow\",\"flow\":\"%s\",\"anisotropic\":%d,\"denoise\":%g,\"vertices_start\":%d,"
                     "\"vertices_max\":%d,\"steps\":%d,\"volume_error\":%.3e,\"worst_volume_error\":%.3e,"
-                    "\"max_area_ratio\":%.3f,\"max_normal_turn\":%.1f,\"seconds\":%.2f,\"advect_s\":%.2f,"
+                    "\"max_area_ratio\":%.3f,\"max_normal_turn\":%.1f,\"max_self_intersections\":%d,\"seconds\":%.2f,\"advect_s\":%.2f,"
                     "\"smooth_s\":%.2f,\"adapt_s\":%.2f,\"analysis_s\":%.2f,\"smoothing_s\":%.2f,"
                     "\"flipping_s\":%.2f,\"split_contract_s\":%.2f,\"adaptation_over_advection\":%.1f}\n",
                     run.title, run.isotropic ? 0 : 1, run.denoise, nverts, result.max_vertices, run.steps, result.volume_error,
-                    result.worst_volume_error, result.max_area_ratio, result.max_normal_turn, result.seconds,
+                    result.worst_volume_error, result.max_area_ratio, result.max_normal_turn,
+                    result.max_self_intersections, result.seconds,
                     result.advect_seconds, result.smooth_seconds, result.adapt_seconds, result.analysis_seconds,
                     result.smoothing_seconds, result.flipping_seconds, result.repair_seconds,
                     (result.smooth_seconds + result.adapt_seconds) / result.advect_seconds);

@@ -29,7 +29,8 @@ struct FlowResult {
     double volume_error = 0;       // at the end, relative
     double worst_volume_error = 0; // over the run, relative, largest magnitude
     double max_area_ratio = 1;
-    double max_normal_turn = 0;    // degrees, over every step: near 180 would be a fold
+    double max_normal_turn = 0;    // degrees, over every step: near 180 at a fold or a cusp
+    int max_self_intersections = 0; // at the table's rows: pairs of triangles that cross
     int max_vertices = 0;
     double seconds = 0, advect_seconds = 0, smooth_seconds = 0, adapt_seconds = 0; // per call
     // Inside sfa_smooth and sfa_adapt, per phase (SFA_MEASURE_SECONDS_*).

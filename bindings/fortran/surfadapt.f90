@@ -71,6 +71,7 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_MEASURE_SECONDS_SMOOTHING = 10
   integer(c_int), parameter, public :: SFA_MEASURE_SECONDS_FLIPPING = 11
   integer(c_int), parameter, public :: SFA_MEASURE_SECONDS_REPAIR = 12
+  integer(c_int), parameter, public :: SFA_MEASURE_SELF_INTERSECTIONS = 13
 
   public :: sfa_version_string, sfa_abi_version, sfa_status_string
   public :: sfa_create, sfa_destroy, sfa_last_error

@@ -3,6 +3,7 @@
 
 #include "api/analysis_settings.hpp"
 #include "geometry/measures.hpp"
+#include "geometry/self_intersection.hpp"
 
 using namespace sfa;
 
@@ -26,11 +27,11 @@ SFA_EXPORT int sfa_measure(const sfa_surface *s, int quantity, double *value)
 {
     return call(s, "sfa_measure", [&] {
         require(value != nullptr, "value is NULL");
-        if (quantity < SFA_MEASURE_VOLUME || quantity > SFA_MEASURE_SECONDS_REPAIR) {
+        if (quantity < SFA_MEASURE_VOLUME || quantity > SFA_MEASURE_SELF_INTERSECTIONS) {
             char message[120];
             std::snprintf(message, sizeof message,
                           "unknown quantity %d (quantities are 0 to %d, enum sfa_measure_quantity)", quantity,
-                          SFA_MEASURE_SECONDS_REPAIR);
+                          SFA_MEASURE_SELF_INTERSECTIONS);
             fail(Status::argument, message);
         }
         switch (quantity) {
@@ -51,6 +52,7 @@ SFA_EXPORT int sfa_measure(const sfa_surface *s, int quantity, double *value)
         case SFA_MEASURE_MIN_EDGE_LENGTH: *value = edge_lengths(mesh).min; break;
         case SFA_MEASURE_MAX_EDGE_LENGTH: *value = edge_lengths(mesh).max; break;
         case SFA_MEASURE_MAX_NORMAL_TURN: *value = max_normal_turn_degrees(mesh); break;
+        case SFA_MEASURE_SELF_INTERSECTIONS: *value = self_intersection_count(mesh); break;
         }
     });
 }

@@ -22,6 +22,7 @@ static void unit_cube(void **state)
      * R / (2 r) = (1 + sqrt(2)) / 2. */
     assert_near(measure(s, SFA_MEASURE_MAX_ASPECT_RATIO), (1 + sqrt(2.0)) / 2, 1e-12);
     assert_near(measure(s, SFA_MEASURE_MAX_NORMAL_TURN), 90.0, 1e-12);
+    assert_true(measure(s, SFA_MEASURE_SELF_INTERSECTIONS) == 0);
     sfa_destroy(s);
 }
 
@@ -137,6 +138,70 @@ static void folded_patch_turns_by_almost_180_degrees(void **state)
     mesh_free(&grid);
 }
 
+/* A cusp: a patch hinged along its middle line until its halves are 4 degrees apart, like
+ * the rim of a sheet thinner than an edge. Its normals turn by 176 degrees, but it does
+ * not pass through itself. Pulling one vertex across its neighbours in the plane makes
+ * its fan overlap triangles it shares no vertex with: that does. */
+static void a_cusp_is_no_self_intersection_but_an_overlap_is(void **state)
+{
+    (void)state;
+    const double opening = 176 * acos(-1.0) / 180;
+    sfa_mesh_data grid = shape_grid(4, 4, 0.25);
+    for (int32_t v = 0; v < grid.nverts; ++v) {
+        double *p = grid.xyz + 3 * v;
+        if (p[0] > 0.5 + 1e-9) { /* the right half turns about the line x = 0.5 */
+            const double r = p[0] - 0.5;
+            p[0] = 0.5 + r * cos(opening);
+            p[2] = r * sin(opening);
+        }
+    }
+    sfa_surface *s = make_surface(&grid, 0);
+    assert_near(measure(s, SFA_MEASURE_MAX_NORMAL_TURN), 176.0, 1e-9);
+    assert_true(measure(s, SFA_MEASURE_SELF_INTERSECTIONS) == 0);
+    sfa_destroy(s);
+    mesh_free(&grid);
+
+    grid = shape_grid(4, 4, 0.25);
+    grid.xyz[3 * 6] += 0.6; /* vertex (1, 1), at (0.25, 0.25), pulled to x = 0.85 */
+    s = make_surface(&grid, 0);
+    assert_true(measure(s, SFA_MEASURE_SELF_INTERSECTIONS) > 0);
+    sfa_destroy(s);
+    mesh_free(&grid);
+}
+
+/* Two spheres in one mesh: apart they do not intersect; overlapping, they do. */
+static void overlapping_spheres_intersect(void **state)
+{
+    (void)state;
+    const double shifts[] = {2.5, 1.5};
+    for (int k = 0; k < 2; ++k) {
+        sfa_mesh_data a = shape_icosphere(3, 1.0), both;
+        both.nverts = 2 * a.nverts;
+        both.ntris = 2 * a.ntris;
+        both.xyz = malloc(sizeof(double) * 3 * (size_t)both.nverts);
+        both.tris = malloc(sizeof(int32_t) * 3 * (size_t)both.ntris);
+        assert_non_null(both.xyz);
+        assert_non_null(both.tris);
+        for (int32_t i = 0; i < 3 * a.nverts; ++i) {
+            both.xyz[i] = a.xyz[i];
+            both.xyz[3 * a.nverts + i] = a.xyz[i] + (i % 3 == 0 ? shifts[k] : 0);
+        }
+        for (int32_t i = 0; i < 3 * a.ntris; ++i) {
+            both.tris[i] = a.tris[i];
+            both.tris[3 * a.ntris + i] = a.tris[i] + a.nverts;
+        }
+        sfa_surface *s = make_surface(&both, 0);
+        const double crossings = measure(s, SFA_MEASURE_SELF_INTERSECTIONS);
+        if (k == 0)
+            assert_true(crossings == 0);
+        else
+            assert_true(crossings > 0);
+        sfa_destroy(s);
+        mesh_free(&a);
+        mesh_free(&both);
+    }
+}
+
 static void open_flat_patch(void **state)
 {
     (void)state;
@@ -160,7 +225,7 @@ static void bad_arguments_and_state(void **state)
     (void)state;
     sfa_surface *s = make_cube_surface();
     double v = 77;
-    const int unknown[] = {-1, SFA_MEASURE_SECONDS_REPAIR + 1, 1000, INT32_MIN};
+    const int unknown[] = {-1, SFA_MEASURE_SELF_INTERSECTIONS + 1, 1000, INT32_MIN};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; ++i) {
         assert_error(s, sfa_measure(s, unknown[i], &v), SFA_ERR_ARGUMENT, "");
         assert_true(v == 77);
@@ -170,7 +235,9 @@ static void bad_arguments_and_state(void **state)
     sfa_destroy(s);
 
     assert_int_equal(sfa_create(&s), SFA_OK);
-    for (int q = SFA_MEASURE_VOLUME; q <= SFA_MEASURE_MAX_NORMAL_TURN; ++q) {
+    for (int q = SFA_MEASURE_VOLUME; q <= SFA_MEASURE_SELF_INTERSECTIONS; ++q) {
+        if (q >= SFA_MEASURE_SECONDS_ANALYSIS && q <= SFA_MEASURE_SECONDS_REPAIR)
+            continue; /* the phase clocks need no mesh */
         assert_error(s, sfa_measure(s, q, &v), SFA_ERR_STATE, "");
         assert_true(v == 77);
     }
@@ -226,6 +293,8 @@ int main(void)
         cmocka_unit_test(geodesic_spheres_are_valid_at_any_frequency),
         cmocka_unit_test(open_flat_patch),
         cmocka_unit_test(folded_patch_turns_by_almost_180_degrees),
+        cmocka_unit_test(a_cusp_is_no_self_intersection_but_an_overlap_is),
+        cmocka_unit_test(overlapping_spheres_intersect),
         cmocka_unit_test(bad_arguments_and_state),
         cmocka_unit_test(phase_seconds_accumulate),
     };

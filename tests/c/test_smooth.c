@@ -79,14 +79,7 @@ static double roughness(const sfa_surface *s)
 static void denoising_removes_radial_noise_and_keeps_volume(void **state)
 {
     (void)state;
-    sfa_mesh_data m = shape_icosphere(4, 1.0);
-    const double amplitude = mesh_mean_edge_length(&m) / 20;
-    uint64_t seed = 11;
-    for (int32_t v = 0; v < m.nverts; ++v) {
-        const double scale = 1 + amplitude * jitter(&seed);
-        for (int k = 0; k < 3; ++k)
-            m.xyz[3 * v + k] *= scale;
-    }
+    sfa_mesh_data m = shape_noisy_icosphere(4, 1.0, 1.0 / 20, 11);
     double rough[2], volume_change[2];
     for (int denoise = 0; denoise <= 1; ++denoise) {
         sfa_surface *s = make_surface(&m, 0);

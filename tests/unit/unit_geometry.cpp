@@ -2,6 +2,7 @@
 // near-degenerate tensors, the frame rotation of §3.2, metric lengths (eq. 4) and the
 // clamping of eq. 12.
 #include "geometry/metric.hpp"
+#include "geometry/self_intersection.hpp"
 
 #include <cmath>
 #include <cstdarg>
@@ -121,6 +122,20 @@ void tensor_square_roots_match_the_eigen_decomposition(void **)
         }
 }
 
+void triangle_pairs_intersect_where_they_share_a_point(void **)
+{
+    const Vec3 a0(0, 0, 0), a1(1, 0, 0), a2(0, 1, 0);
+    // Through a's interior, across it, beside it, above it, touching its corner, and in its plane.
+    assert_true(triangles_intersect(a0, a1, a2, Vec3(0.2, 0.2, -1), Vec3(0.2, 0.2, 1), Vec3(0.3, 0.5, 1)));
+    assert_false(triangles_intersect(a0, a1, a2, Vec3(2, 2, -1), Vec3(2, 2, 1), Vec3(2, 3, 1)));
+    assert_false(triangles_intersect(a0, a1, a2, Vec3(0, 0, 1e-3), Vec3(1, 0, 1e-3), Vec3(0, 1, 1e-3)));
+    assert_true(triangles_intersect(a0, a1, a2, Vec3(1, 0, 0), Vec3(2, 0, 1), Vec3(2, 1, -1)));
+    assert_true(triangles_intersect(a0, a1, a2, Vec3(0.4, 0.4, 0), Vec3(2, 0.4, 0), Vec3(0.4, 2, 0)));
+    assert_false(triangles_intersect(a0, a1, a2, Vec3(0.6, 0.6, 0), Vec3(2, 0.6, 0), Vec3(0.6, 2, 0)));
+    // One inside the other, in the same plane.
+    assert_true(triangles_intersect(a0, a1, a2, Vec3(0.1, 0.1, 0), Vec3(0.3, 0.1, 0), Vec3(0.1, 0.3, 0)));
+}
+
 } // namespace
 
 int main()
@@ -133,6 +148,7 @@ int main()
         cmocka_unit_test(frame_rotation_stays_a_rotation_when_normals_differ),
         cmocka_unit_test(metric_length_scales_with_direction),
         cmocka_unit_test(tensor_square_roots_match_the_eigen_decomposition),
+        cmocka_unit_test(triangle_pairs_intersect_where_they_share_a_point),
     };
     return cmocka_run_group_tests_name("unit_geometry", tests, nullptr, nullptr);
 }
