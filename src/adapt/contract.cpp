@@ -4,6 +4,7 @@
 #include "geometry/circle.hpp"
 #include "geometry/edge_neighbourhood.hpp"
 #include "geometry/quadric_error.hpp"
+#include "geometry/self_intersection.hpp"
 #include "mesh/compact.hpp"
 #include "mesh/edge_collapse.hpp"
 #include "mesh/parallel.hpp"
@@ -15,6 +16,9 @@
 namespace sfa {
 namespace {
 
+// The merged vertex moves off the edge's centre by at most this fraction of the edge's
+// length (quadric_error_minimum_along), as a split vertex does.
+constexpr double max_shift_ratio = 0.25;
 // A face may turn this much at most: more is a fold in the making.
 const double cos_max_face_turn = 0.5; // 60 degrees
 // A face whose height is below this fraction of its longest edge is nearly flat (an angle
@@ -97,6 +101,39 @@ bool faces_survive(const TriMesh &mesh, int32_t h, const Vec3 &merged)
     return ok;
 }
 
+// True if no face around the merged vertex would pass through a face around the ends'
+// neighbours that it shares no vertex with. Where a sheet is thinner than an edge (the
+// filaments of the vortex flow), the other side of the sheet is that close, and a merged
+// vertex can land beyond it although every face keeps its own orientation.
+bool stays_clear_of_neighbours(const TriMesh &mesh, int32_t h, const Vec3 &merged)
+{
+    const int32_t a = mesh.tail(h), b = mesh.head(h);
+    const auto corner = [&](int32_t v) { return v == a || v == b ? merged : mesh.pos[v]; };
+    const auto same = [&](int32_t v) { return v == a ? b : v; }; // a and b become one vertex
+    bool clear = true;
+    for_each_face_around(mesh, h, [&](int32_t f) {
+        const Triangle &t = mesh.tri[f];
+        const bool has_a = t[0] == a || t[1] == a || t[2] == a, has_b = t[0] == b || t[1] == b || t[2] == b;
+        if (!clear || (has_a && has_b))
+            return; // done, or dies with the edge
+        const auto check_faces_at = [&](int32_t w) {
+            mesh.for_each_outgoing(w, [&](int32_t g) {
+                const Triangle &u = mesh.tri[TriMesh::face(g)];
+                for (int32_t x : t)
+                    for (int32_t y : u)
+                        if (same(x) == same(y))
+                            return; // shares a vertex (or is f itself)
+                if (triangles_intersect(corner(t[0]), corner(t[1]), corner(t[2]), corner(u[0]), corner(u[1]),
+                                        corner(u[2])))
+                    clear = false;
+            });
+        };
+        mesh.for_each_neighbour(a, [&](int32_t w, int32_t) { check_faces_at(w); });
+        mesh.for_each_neighbour(b, [&](int32_t w, int32_t) { check_faces_at(w); });
+    });
+    return clear;
+}
+
 // Where the merged vertex goes (§4.2), or false if the contraction would spoil a feature.
 bool merged_position(const TriMesh &mesh, int32_t h, const CarriedFeatures &features, Vec3 &merged, int8_t &merged_rank)
 {
@@ -122,7 +159,8 @@ bool merged_position(const TriMesh &mesh, int32_t h, const CarriedFeatures &feat
         normal += (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]);
     });
     merged = quadric_error_minimum_along(
-        mesh, [&](auto &&visit) { for_each_face_around(mesh, h, visit); }, merged, normal.normalized());
+        mesh, [&](auto &&visit) { for_each_face_around(mesh, h, visit); }, merged, normal.normalized(),
+        max_shift_ratio * (mesh.pos[b] - mesh.pos[a]).norm());
     return true;
 }
 
@@ -164,7 +202,8 @@ int32_t contraction_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const R
         Vec3 merged;
         int8_t merged_rank;
         if (h < 0 || !wants_contraction(mesh, analysis, h, settings) || !collapse_keeps_manifold(mesh, h) ||
-            !merged_position(mesh, h, features, merged, merged_rank) || !faces_survive(mesh, h, merged))
+            !merged_position(mesh, h, features, merged, merged_rank) || !faces_survive(mesh, h, merged) ||
+            !stays_clear_of_neighbours(mesh, h, merged))
             continue;
         const Stencil stencil = stencil_over(mesh, merged, [&](auto &&visit) { for_each_face_around(mesh, h, visit); });
         const int32_t gone = mesh.tail(h), keep = mesh.head(h);

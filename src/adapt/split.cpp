@@ -13,6 +13,11 @@
 namespace sfa {
 namespace {
 
+// The new vertex moves off the chord by at most this fraction of the edge's length
+// (quadric_error_minimum_along): twice the sagitta of an edge that turns the surface by a
+// radian.
+constexpr double max_shift_ratio = 0.25;
+
 bool wants_split(const EdgeNeighbourhood &n, const RepairSettings &settings)
 {
     const bool absolutely_long = n.length >= n.longest && n.length > settings.split_length;
@@ -80,7 +85,7 @@ Vec3 new_vertex_position(const TriMesh &mesh, int32_t h, bool on_ridge, const Ca
                 if (features.rank[end] == 0)
                     mesh.for_each_outgoing(end, [&](int32_t g) { visit(TriMesh::face(g)); });
         },
-        centre, normal.normalized());
+        centre, normal.normalized(), max_shift_ratio * (mesh.pos[b] - mesh.pos[a]).norm());
     return halves_keep_orientation(mesh, h, placed) ? placed : centre;
 }
 

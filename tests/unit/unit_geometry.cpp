@@ -2,6 +2,7 @@
 // near-degenerate tensors, the frame rotation of §3.2, metric lengths (eq. 4) and the
 // clamping of eq. 12.
 #include "geometry/metric.hpp"
+#include "geometry/quadric_error.hpp"
 #include "geometry/self_intersection.hpp"
 
 #include <cmath>
@@ -136,6 +137,22 @@ void triangle_pairs_intersect_where_they_share_a_point(void **)
     assert_true(triangles_intersect(a0, a1, a2, Vec3(0.1, 0.1, 0), Vec3(0.3, 0.1, 0), Vec3(0.1, 0.3, 0)));
 }
 
+// One face in the plane z = 0; from x = (0, 0, 1e-3) along a direction that nearly lies in
+// that plane, the quadric error minimum is 0.1 away: further than a shift of 0.01 allows
+// (x stays), within a shift of 1 (the point lands on the plane).
+void quadric_error_minimum_stays_within_its_shift(void **)
+{
+    TriMesh mesh;
+    mesh.pos = {Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(0, 1, 0)};
+    mesh.tri = {Triangle{0, 1, 2}};
+    const auto faces = [](auto &&visit) { visit(0); };
+    const Vec3 x(0, 0, 1e-3), direction = Vec3(1, 0, 0.01).normalized();
+    assert_true(quadric_error_minimum_along(mesh, faces, x, direction, 0.01) == x);
+    const Vec3 landed = quadric_error_minimum_along(mesh, faces, x, direction, 1.0);
+    assert_true(std::abs(landed.z()) < 1e-15);
+    assert_true(std::abs((landed - x).norm() - 0.1 * Vec3(1, 0, 0.01).norm()) < 1e-12);
+}
+
 } // namespace
 
 int main()
@@ -149,6 +166,7 @@ int main()
         cmocka_unit_test(metric_length_scales_with_direction),
         cmocka_unit_test(tensor_square_roots_match_the_eigen_decomposition),
         cmocka_unit_test(triangle_pairs_intersect_where_they_share_a_point),
+        cmocka_unit_test(quadric_error_minimum_stays_within_its_shift),
     };
     return cmocka_run_group_tests_name("unit_geometry", tests, nullptr, nullptr);
 }
