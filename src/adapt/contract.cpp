@@ -16,9 +16,6 @@
 namespace sfa {
 namespace {
 
-// The merged vertex moves off the edge's centre by at most this fraction of the edge's
-// length (quadric_error_minimum_along), as a split vertex does.
-constexpr double max_shift_ratio = 0.25;
 // A face may turn this much at most: more is a fold in the making.
 const double cos_max_face_turn = 0.5; // 60 degrees
 // A face whose height is below this fraction of its longest edge is nearly flat (an angle

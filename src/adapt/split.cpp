@@ -13,11 +13,6 @@
 namespace sfa {
 namespace {
 
-// The new vertex moves off the chord by at most this fraction of the edge's length
-// (quadric_error_minimum_along): twice the sagitta of an edge that turns the surface by a
-// radian.
-constexpr double max_shift_ratio = 0.25;
-
 bool wants_split(const EdgeNeighbourhood &n, const RepairSettings &settings)
 {
     const bool absolutely_long = n.length >= n.longest && n.length > settings.split_length;

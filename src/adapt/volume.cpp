@@ -1,9 +1,8 @@
 #include "adapt/volume.hpp"
 
 #include "geometry/measures.hpp"
-#include "motion/fold_time.hpp"
-
 #include "mesh/parallel.hpp"
+#include "motion/fold_time.hpp"
 
 #include <cmath>
 #include <limits>

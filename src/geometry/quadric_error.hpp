@@ -15,6 +15,9 @@ namespace sfa {
 // eighth of L even where one edge turns the surface by a radian. A shift beyond max_shift
 // means the faces describe no single smooth sheet (a cusp, or the two sides of a filament
 // thinner than an edge, where the minimum may lie beyond the other side): x stays.
+// Splitting and contraction allow max_shift_ratio times the edge's length: twice the
+// sagitta of an edge that turns the surface by a radian.
+inline constexpr double max_shift_ratio = 0.25;
 template <class ForEachFace>
 Vec3 quadric_error_minimum_along(const TriMesh &mesh, ForEachFace &&for_each_face, const Vec3 &x, const Vec3 &direction,
                                  double max_shift)
