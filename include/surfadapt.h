@@ -408,9 +408,11 @@ int sfa_smooth(sfa_surface *s, int32_t iterations);
  * started with (to round-off). Corners never move; ridge vertices stay on their ridge
  * curves; boundaries stay boundaries.
  *
- * Vertex and triangle counts change and vertices are renumbered (survivors keep their
- * order, new ones come after): read the mesh back with sfa_get_counts() and
- * sfa_get_mesh(). Fields and velocities follow: a new or moved vertex gets the values
+ * Vertex and triangle counts change and vertices are renumbered: read the mesh back with
+ * sfa_get_counts() and sfa_get_mesh(). A call that splits or contracts edges returns the
+ * vertices in the order of a space-filling curve through the surface, and the triangles
+ * in the order of their first vertex, so that neighbours lie close in memory (in the
+ * host's arrays too); a call that only flips and smooths keeps the numbering. Fields and velocities follow: a new or moved vertex gets the values
  * interpolated (barycentrically) at its position in the old triangle it lies over, so
  * that a field linear on a flat region stays exactly linear. A vertex put on a straight
  * ridge edge is interpolated along that edge only, so values do not mix across the ridge

@@ -83,15 +83,16 @@ int run_flow(const FlowRun &run, FlowResult &result)
         t = t_end;
         result.advect_seconds += since(phase);
         phase = Clock::now();
-        if (sfa_smooth(s, 1) != SFA_OK)
-            return fail(s, "sfa_smooth");
-        result.smooth_seconds += since(phase);
-        // More than two sub-steps: the fold control cut the step to less than half.
+        // More than two sub-steps: the fold control cut the step to less than half. The
+        // adaptation smooths too (sfa_adapt's sweeps), so a step adapted is not smoothed again.
         if (run.adapt_every > 0 && (step % run.adapt_every == 0 || substeps > 2)) {
-            phase = Clock::now();
             if (sfa_adapt(s) != SFA_OK)
                 return fail(s, "sfa_adapt");
             result.adapt_seconds += since(phase);
+        } else {
+            if (sfa_smooth(s, 1) != SFA_OK)
+                return fail(s, "sfa_smooth");
+            result.smooth_seconds += since(phase);
         }
         result.seconds = since(start);
 

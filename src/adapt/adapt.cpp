@@ -8,6 +8,7 @@
 #include "adapt/volume.hpp"
 #include "fields/transfer.hpp"
 #include "geometry/measures.hpp"
+#include "mesh/locality_order.hpp"
 
 namespace sfa {
 namespace {
@@ -64,6 +65,12 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
     if (closed) {
         PhaseClock clock(seconds.smoothing);
         restore_enclosed_volume(mesh, features.rank, volume);
+    }
+    // New vertices and triangles were appended where they were made: put neighbours next
+    // to each other in memory again, for every loop until the next adaptation.
+    if (counts.splits + counts.contractions > 0) {
+        PhaseClock clock(seconds.repair);
+        renumber_fields(fields, order_for_locality(mesh));
     }
     return counts;
 }

@@ -30,8 +30,9 @@ struct AdaptCounts {
 // pass: split, contract, flip, then smooth, every step after a fresh analysis of the
 // geometry as it then is; until a pass changes the connectivity of at most 1 in 100
 // vertices or max_passes were made. A closed surface then gets its enclosed volume back
-// (restore_enclosed_volume). The fields (one value set per vertex) follow every step. The
-// mesh stays dense and valid. The seconds of each phase are counted in the result.
+// (restore_enclosed_volume), and if edges were split or contracted, the mesh is renumbered
+// for locality (locality_order.hpp). The fields (one value set per vertex) follow every
+// step. The mesh stays dense and valid. The seconds of each phase are counted in the result.
 AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings);
 
 } // namespace sfa

@@ -1,5 +1,7 @@
 #include "adapt/carried_features.hpp"
 
+#include "mesh/parallel.hpp"
+
 #include <algorithm>
 
 namespace sfa {
@@ -53,8 +55,12 @@ Features CarriedFeatures::as_features(const TriMesh &mesh) const
     Features f;
     f.rank = rank;
     f.ridge_halfedge.assign(mesh.opp.size(), 0);
-    for (int32_t h = 0; h < static_cast<int32_t>(mesh.opp.size()); ++h)
-        f.ridge_halfedge[h] = ridges.contains(mesh.tail(h), mesh.head(h));
+    // Only an edge between two feature vertices can be a ridge: no look-up for the others.
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t h = 0; h < static_cast<int32_t>(mesh.opp.size()); ++h) {
+        const int32_t a = mesh.tail(h), b = mesh.head(h);
+        f.ridge_halfedge[h] = rank[a] > 0 && rank[b] > 0 && ridges.contains(a, b);
+    }
     f.ridge_edges = ridges.edges();
     return f;
 }

@@ -47,7 +47,7 @@ bool wants_contraction(const TriMesh &mesh, const SurfaceAnalysis &analysis, int
 {
     const EdgeNeighbourhood n = edge_neighbourhood(mesh, h);
     for (int k = 0; k < n.triangles; ++k)
-        if (n.opposite_angle[k] < s.small_angle && n.triangle_longest[k] < s.desired_length)
+        if (n.opposite_cos[k] > s.cos_small_angle && n.triangle_longest[k] < s.desired_length)
             return true; // absolute small angle
     if (n.length < s.contract_short_ratio * n.longest)
         return true; // relative shortness

@@ -105,12 +105,17 @@ int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const Flip
     const int32_t halfedges = 3 * mesh.num_triangles();
     const auto may_flip = [&](int32_t h) { return !locked[h] && flip_keeps_manifold(mesh, h); };
 
-    // Judging is independent per edge (in parallel); collecting is in half-edge order.
+    // Judging is independent per edge (in parallel); collecting is in half-edge order. The
+    // manifold test walks a fan through memory far apart: only for the few edges that
+    // would flip.
     std::vector<Verdict> verdict(halfedges, Verdict{false, 0});
 #pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 1024)
     for (int32_t h = 0; h < halfedges; ++h)
-        if (mesh.opp[h] > h && may_flip(h)) // each interior edge once, from its lower half
-            verdict[h] = judge(mesh, h, quadric, settings, cos_max_dihedral);
+        if (mesh.opp[h] > h && !locked[h]) { // each interior edge once, from its lower half
+            const Verdict v = judge(mesh, h, quadric, settings, cos_max_dihedral);
+            if (v.flip && flip_keeps_manifold(mesh, h))
+                verdict[h] = v;
+        }
     std::vector<Candidate> candidates;
     for (int32_t h = 0; h < halfedges; ++h)
         if (verdict[h].flip)

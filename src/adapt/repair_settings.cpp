@@ -1,5 +1,7 @@
 #include "adapt/repair_settings.hpp"
 
+#include <cmath>
+
 namespace sfa {
 
 RepairSettings repair_settings(const Parameters &p, double l)
@@ -11,8 +13,8 @@ RepairSettings repair_settings(const Parameters &p, double l)
             p.get(Param::contract_length_ratio) * l,
             p.get(Param::contract_short_ratio),
             p.get(Param::contract_small_ratio),
-            p.get(Param::small_angle) * degrees,
-            p.get(Param::large_angle) * degrees};
+            std::cos(p.get(Param::small_angle) * degrees),
+            std::cos(p.get(Param::large_angle) * degrees)};
 }
 
 } // namespace sfa

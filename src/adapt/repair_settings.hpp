@@ -13,8 +13,8 @@ struct RepairSettings {
     double contract_length;      // S: absolute small triangle
     double contract_short_ratio; // r: relative shortness
     double contract_small_ratio; // R: relative small triangle
-    double small_angle;          // theta_s, radians
-    double large_angle;          // theta_l, radians
+    double cos_small_angle;      // cos theta_s
+    double cos_large_angle;      // cos theta_l
 };
 
 RepairSettings repair_settings(const Parameters &parameters, double desired_length);

@@ -11,8 +11,6 @@
 namespace sfa {
 namespace {
 
-using Frame = Eigen::Matrix<double, 3, 2>;
-
 // Smooth vertex (§3.2): each neighbour's edge midpoint m_q is mapped into the metric space
 // of its edge, u_q = sqrt(M_half) T^T (m_q - p) with M_half = (M_p + M_q seen from p) / 2,
 // the images are averaged, and the average is mapped back through the mean edge metric.
@@ -23,17 +21,19 @@ using Frame = Eigen::Matrix<double, 3, 2>;
 Vec3 tangent_target(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t v)
 {
     const VertexMetric &mp = analysis.metric[v];
-    const Frame frame = mp.frame();
+    const Eigen::Matrix2d own = mp.tensor();
     Eigen::Matrix2d sum_metric = Eigen::Matrix2d::Zero();
     Eigen::Vector2d sum_image = Eigen::Vector2d::Zero();
     int count = 0;
     mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
-        const Eigen::Matrix2d half = 0.5 * (mp.tensor() + tensor_in_frame(analysis.metric[w], mp));
+        const Eigen::Matrix2d half = 0.5 * (own + tensor_in_frame(analysis.metric[w], mp));
         sum_metric += half;
-        sum_image += tensor_sqrt(half) * (frame.transpose() * (0.5 * (mesh.pos[w] - mesh.pos[v])));
+        const Vec3 to_midpoint = 0.5 * (mesh.pos[w] - mesh.pos[v]);
+        sum_image += tensor_sqrt(half) * Eigen::Vector2d(mp.major.dot(to_midpoint), mp.minor.dot(to_midpoint));
         ++count;
     });
-    return frame * (tensor_inverse_sqrt(sum_metric / count) * (sum_image / count));
+    const Eigen::Vector2d t = tensor_inverse_sqrt(sum_metric / count) * (sum_image / count);
+    return t.x() * mp.major + t.y() * mp.minor;
 }
 
 // Ridge (or boundary) vertex: moves only along its ridge, with the same equal-metric-length
@@ -52,11 +52,10 @@ Vec3 ridge_motion(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t 
     const Vec3 &p = mesh.pos[v];
     const Vec3 direction = (mesh.pos[ends[1]] - mesh.pos[ends[0]]).normalized();
     const VertexMetric &mp = analysis.metric[v];
-    const Frame frame = mp.frame();
+    const Eigen::Vector2d d(mp.major.dot(direction), mp.minor.dot(direction));
     double sum_weight = 0, sum_moment = 0;
     for (int32_t w : ends) {
         const Eigen::Matrix2d half = 0.5 * (mp.tensor() + tensor_in_frame(analysis.metric[w], mp));
-        const Eigen::Vector2d d = frame.transpose() * direction;
         // Along a line the frame may not see (a ridge leaving the tangent plane), fall back
         // to the physical length.
         const double weight = std::sqrt(std::max(d.dot(half * d), 1e-12));

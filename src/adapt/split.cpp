@@ -16,8 +16,8 @@ namespace {
 bool wants_split(const EdgeNeighbourhood &n, const RepairSettings &settings)
 {
     const bool absolutely_long = n.length >= n.longest && n.length > settings.split_length;
-    const double largest_angle = std::max(n.opposite_angle[0], n.triangles > 1 ? n.opposite_angle[1] : 0.0);
-    const bool relatively_long = n.length > settings.desired_length && largest_angle > settings.large_angle &&
+    const double cos_largest_angle = std::min(n.opposite_cos[0], n.triangles > 1 ? n.opposite_cos[1] : 1.0);
+    const bool relatively_long = n.length > settings.desired_length && cos_largest_angle < settings.cos_large_angle &&
                                  n.shortest >= settings.split_shortest;
     return absolutely_long || relatively_long;
 }

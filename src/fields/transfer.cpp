@@ -53,16 +53,17 @@ void append_interpolated(std::vector<VertexField> &fields, const Stencil &stenci
 
 void renumber_fields(std::vector<VertexField> &fields, const std::vector<int32_t> &vertex_map)
 {
+    size_t count = 0;
+    for (int32_t target : vertex_map)
+        count += target >= 0;
     for (VertexField &field : fields) {
         const size_t ncomp = static_cast<size_t>(field.ncomp);
+        std::vector<double> values(ncomp * count);
         for (size_t v = 0; v < vertex_map.size(); ++v)
-            if (vertex_map[v] >= 0) // new numbers never exceed old ones: in place, in order
+            if (vertex_map[v] >= 0)
                 for (size_t c = 0; c < ncomp; ++c)
-                    field.values[ncomp * static_cast<size_t>(vertex_map[v]) + c] = field.values[ncomp * v + c];
-        int32_t count = 0;
-        for (int32_t target : vertex_map)
-            count += target >= 0;
-        field.values.resize(ncomp * static_cast<size_t>(count));
+                    values[ncomp * static_cast<size_t>(vertex_map[v]) + c] = field.values[ncomp * v + c];
+        field.values.swap(values);
     }
 }
 

@@ -45,7 +45,8 @@ void set_interpolated(std::vector<VertexField> &fields, int32_t v, const Stencil
 // Appends a vertex with the fields' value at the stencil.
 void append_interpolated(std::vector<VertexField> &fields, const Stencil &stencil);
 
-// Renumbers after compaction: vertex v's values go to vertex_map[v], or away if it is -1.
+// Renumbers after compaction or reordering: vertex v's values go to vertex_map[v], or away
+// if it is -1.
 void renumber_fields(std::vector<VertexField> &fields, const std::vector<int32_t> &vertex_map);
 
 // The fields after every vertex moved to moved[v] at once (a smoothing sweep), each from

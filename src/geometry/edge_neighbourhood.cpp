@@ -17,7 +17,8 @@ EdgeNeighbourhood edge_neighbourhood(const TriMesh &mesh, int32_t h)
         const Vec3 &p = mesh.pos[mesh.head(TriMesh::next(side))];
         const Vec3 to_a = a - p, to_b = b - p;
         const double pa = to_a.norm(), pb = to_b.norm();
-        n.opposite_angle[n.triangles] = std::atan2(to_a.cross(to_b).norm(), to_a.dot(to_b));
+        // A corner on an end of the edge has the angle 0.
+        n.opposite_cos[n.triangles] = pa * pb > 0 ? std::clamp(to_a.dot(to_b) / (pa * pb), -1.0, 1.0) : 1.0;
         n.triangle_longest[n.triangles] = std::max({n.length, pa, pb});
         n.longest = std::max({n.longest, pa, pb});
         n.shortest = std::min({n.shortest, pa, pb});

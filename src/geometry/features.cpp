@@ -1,5 +1,7 @@
 #include "geometry/features.hpp"
 
+#include "mesh/parallel.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -17,6 +19,7 @@ std::vector<int8_t> candidate_ranks(const TriMesh &mesh, const std::vector<Quadr
 {
     const double chi_c = ratio_of_angle(thresholds.ridge_angle), chi_r = ratio_of_angle(thresholds.corner_angle);
     std::vector<int8_t> rank(mesh.pos.size(), 0);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
         const Eigen::Vector3d &lambda = eigen[v].values;
         if (lambda[2] >= chi_r * lambda[0])
@@ -29,6 +32,14 @@ std::vector<int8_t> candidate_ranks(const TriMesh &mesh, const std::vector<Quadr
     return rank;
 }
 
+// Each edge is judged through its lower half-edge, so that both halves (and the vertices
+// at either end) see the same answer to the last bit.
+int32_t canonical_halfedge(const TriMesh &mesh, int32_t h)
+{
+    const int32_t g = mesh.opp[h];
+    return g >= 0 && g < h ? g : h;
+}
+
 // The eigenvalue ratios weigh the two sides of a ridge by area: a vertex whose fan has a
 // sliver on one side (a jittered or graded mesh) can fall below chi_c although it sits on
 // a sharp edge. So the edges vote too: a vertex on two edges whose dihedral angle reaches
@@ -39,19 +50,22 @@ std::vector<int8_t> promoted_by_edges(const TriMesh &mesh, std::vector<int8_t> c
     // Every edge is looked at: compare cosines (no arc tangent). The angle between u and w
     // reaches the ridge angle where u.w <= cos(ridge angle) |u| |w|.
     const double cos_ridge = std::cos(thresholds.ridge_angle);
-    std::vector<int32_t> sharp(mesh.pos.size(), 0);
-    for (int32_t h = 0; h < static_cast<int32_t>(mesh.opp.size()); ++h) {
+    const auto sharp = [&](int32_t h) {
+        h = canonical_halfedge(mesh, h);
         const int32_t g = mesh.opp[h];
-        if (g >= 0 && g < h)
-            continue;
-        const Vec3 &u = area_vectors[TriMesh::face(h)];
-        if (g < 0 || u.dot(area_vectors[TriMesh::face(g)]) <= cos_ridge * u.norm() * area_vectors[TriMesh::face(g)].norm()) {
-            ++sharp[mesh.tail(h)];
-            ++sharp[mesh.head(h)];
-        }
+        if (g < 0)
+            return true;
+        const Vec3 &u = area_vectors[TriMesh::face(h)], &w = area_vectors[TriMesh::face(g)];
+        return u.dot(w) <= cos_ridge * u.norm() * w.norm();
+    };
+    // Gathered per vertex (each edge is looked at from both ends), so that the loop runs in
+    // parallel without shared counters.
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
+        int sharp_edges = 0;
+        mesh.for_each_neighbour(v, [&](int32_t, int32_t h) { sharp_edges += sharp(h); });
+        candidate[v] = std::max<int8_t>(candidate[v], sharp_edges >= 3 ? 2 : sharp_edges == 2 ? 1 : 0);
     }
-    for (size_t v = 0; v < candidate.size(); ++v)
-        candidate[v] = std::max<int8_t>(candidate[v], sharp[v] >= 3 ? 2 : sharp[v] == 2 ? 1 : 0);
     return candidate;
 }
 
@@ -63,18 +77,25 @@ constexpr double boundary_strength = 4;
 std::vector<double> candidate_edges(const TriMesh &mesh, const std::vector<int8_t> &candidate,
                                     const std::vector<Vec3> &area_vectors, const FeatureThresholds &thresholds)
 {
+    // The arc tangent only where the cosine leaves doubt: an angle whose cosine exceeds
+    // cos(ridge angle) by more than round-off is certainly below it.
+    const double cos_below = std::cos(thresholds.ridge_angle) + 1e-9;
     std::vector<double> strength(mesh.opp.size(), 0);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t h = 0; h < static_cast<int32_t>(mesh.opp.size()); ++h) {
-        const int32_t g = mesh.opp[h];
+        const int32_t c = canonical_halfedge(mesh, h), g = mesh.opp[c];
         if (g < 0) {
             strength[h] = boundary_strength;
             continue;
         }
-        if (g < h || candidate[mesh.tail(h)] == 0 || candidate[mesh.head(h)] == 0)
+        if (candidate[mesh.tail(c)] == 0 || candidate[mesh.head(c)] == 0)
             continue;
-        const double dihedral = angle_between(area_vectors[TriMesh::face(h)], area_vectors[TriMesh::face(g)]);
+        const Vec3 &u = area_vectors[TriMesh::face(c)], &w = area_vectors[TriMesh::face(g)];
+        if (u.dot(w) > cos_below * u.norm() * w.norm())
+            continue;
+        const double dihedral = angle_between(u, w);
         if (dihedral >= thresholds.ridge_angle)
-            strength[h] = strength[g] = dihedral;
+            strength[h] = dihedral;
     }
     return strength;
 }
@@ -85,27 +106,28 @@ std::vector<double> candidate_edges(const TriMesh &mesh, const std::vector<int8_
 std::vector<char> pruned_edges(const TriMesh &mesh, const std::vector<int8_t> &candidate,
                                const std::vector<double> &strength)
 {
+    // Few vertices have more than two candidate edges: find them in parallel, and prune
+    // them one by one (the edge lists need memory, which a parallel loop must not ask for).
+    std::vector<char> crowded(mesh.pos.size(), 0);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
+        int edges = 0;
+        mesh.for_each_neighbour(v, [&](int32_t, int32_t h) { edges += strength[h] > 0; });
+        crowded[v] = candidate[v] != 2 && edges > 2;
+    }
     std::vector<char> keep(strength.size(), 0);
     for (size_t h = 0; h < strength.size(); ++h)
         keep[h] = strength[h] > 0;
     std::vector<int32_t> edges;
     for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
-        if (candidate[v] == 2)
+        if (!crowded[v])
             continue;
         edges.clear();
-        // Outgoing half-edges cover every edge at v but the boundary edge arriving at v:
-        // look at it through its incoming half-edge, prev of the last outgoing one.
-        int32_t last = -1;
-        mesh.for_each_outgoing(v, [&](int32_t h) {
+        // Every edge at v once: the half-edges leaving v, and the boundary one arriving.
+        mesh.for_each_neighbour(v, [&](int32_t, int32_t h) {
             if (strength[h] > 0)
                 edges.push_back(h);
-            last = h;
         });
-        const int32_t incoming = TriMesh::prev(last);
-        if (mesh.opp[incoming] < 0)
-            edges.push_back(incoming);
-        if (edges.size() <= 2)
-            continue;
         const auto far_end = [&](int32_t h) { return mesh.pos[mesh.tail(h) == v ? mesh.head(h) : mesh.tail(h)]; };
         std::sort(edges.begin(), edges.end(), [&](int32_t x, int32_t y) {
             if (strength[x] != strength[y])
@@ -153,6 +175,7 @@ Features detect_features(const TriMesh &mesh, const std::vector<QuadricEigen> &e
     std::sort(features.ridge_edges.begin(), features.ridge_edges.end());
 
     features.rank.assign(mesh.pos.size(), 0);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
         if (count[v] == 0)
             // An isolated corner, like a cone's tip: its normals spread in every direction

@@ -33,8 +33,18 @@ Vec3 onto_fitted_surface(const TriMesh &mesh, int32_t v, const VertexMetric &fra
     });
     const Eigen::LLT<Matrix5> solver(normal_matrix);
     // Neighbours on two lines through v (or fewer directions) cannot fix three
-    // coefficients: keep to the tangent plane.
-    if (solver.info() != Eigen::Success || !(solver.rcond() > 1e-8))
+    // coefficients, and five neighbours nearly so make a fit that amplifies every wiggle:
+    // keep to the tangent plane where the reciprocal condition number is 1e-8 or less.
+    // Its estimate costs several solves; the squared ratio of the smallest to the largest
+    // Cholesky pivot costs nothing and bounds it from above (the pivots lie between the
+    // extreme eigenvalues), so it settles a clear rejection at once, and on real meshes it
+    // exceeds the estimate at most about a hundredfold, so that well above the threshold
+    // the estimate is not needed either.
+    if (solver.info() != Eigen::Success)
+        return target;
+    const auto pivots = solver.matrixLLT().diagonal();
+    const double pivot_ratio2 = std::pow(pivots.minCoeff() / pivots.maxCoeff(), 2);
+    if (!(pivot_ratio2 > 1e-8) || (pivot_ratio2 < 1e-3 && !(solver.rcond() > 1e-8)))
         return target;
     const Vector5 coefficients = solver.solve(right_side);
     const Vec3 d = target - p;

@@ -1,5 +1,7 @@
 #include "geometry/measures.hpp"
 
+#include "mesh/parallel.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -17,10 +19,11 @@ double enclosed_volume(const TriMesh &mesh) { return enclosed_volume(mesh, mesh.
 
 double enclosed_volume(const TriMesh &mesh, const std::vector<Vec3> &positions)
 {
-    double six_volume = 0;
-    for (const Triangle &t : mesh.tri)
-        six_volume += positions[t[0]].dot(positions[t[1]].cross(positions[t[2]]));
-    return six_volume / 6;
+    return ordered_sum(mesh.num_triangles(), 0.0, [&](int32_t k) {
+               const Triangle &t = mesh.tri[k];
+               return positions[t[0]].dot(positions[t[1]].cross(positions[t[2]]));
+           }) /
+           6;
 }
 
 Vec3 volume_gradient(const TriMesh &mesh, int32_t v)
@@ -36,27 +39,29 @@ Vec3 volume_gradient(const TriMesh &mesh, int32_t v)
 
 double surface_area(const TriMesh &mesh)
 {
-    double twice_area = 0;
-    for (const Triangle &t : mesh.tri)
-        twice_area += (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]).norm();
-    return twice_area / 2;
+    return ordered_sum(mesh.num_triangles(), 0.0, [&](int32_t k) {
+               const Triangle &t = mesh.tri[k];
+               return (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]).norm();
+           }) /
+           2;
 }
 
 AngleRange angle_range(const TriMesh &mesh)
 {
-    AngleRange range{std::numeric_limits<double>::infinity(), 0};
-    for (const Triangle &t : mesh.tri) {
-        for (int k = 0; k < 3; ++k) {
-            const Vec3 &corner = mesh.pos[t[k]];
+    // min and max are exact: the same for any number of threads.
+    double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(min : smallest) reduction(max : largest)
+    for (int32_t k = 0; k < mesh.num_triangles(); ++k) {
+        const Triangle &t = mesh.tri[k];
+        for (int i = 0; i < 3; ++i) {
+            const Vec3 &corner = mesh.pos[t[i]];
             const double angle =
-                angle_between(mesh.pos[t[(k + 1) % 3]] - corner, mesh.pos[t[(k + 2) % 3]] - corner);
-            range.min_degrees = std::min(range.min_degrees, angle);
-            range.max_degrees = std::max(range.max_degrees, angle);
+                angle_between(mesh.pos[t[(i + 1) % 3]] - corner, mesh.pos[t[(i + 2) % 3]] - corner);
+            smallest = std::min(smallest, angle);
+            largest = std::max(largest, angle);
         }
     }
-    range.min_degrees *= degrees_per_radian;
-    range.max_degrees *= degrees_per_radian;
-    return range;
+    return AngleRange{smallest * degrees_per_radian, largest * degrees_per_radian};
 }
 
 EdgeLengths edge_lengths(const TriMesh &mesh)
@@ -97,6 +102,7 @@ double max_aspect_ratio(const TriMesh &mesh)
 double max_normal_turn_degrees(const TriMesh &mesh)
 {
     double largest = 0;
+#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(max : largest)
     for (int32_t h = 0; h < 3 * mesh.num_triangles(); ++h) {
         const int32_t twin = mesh.opp[h];
         if (twin < h)

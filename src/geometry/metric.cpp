@@ -57,28 +57,6 @@ Eigen::Matrix2d frame_rotation(const Eigen::Matrix<double, 3, 2> &frame_q, const
     return r;
 }
 
-Eigen::Matrix2d tensor_in_frame(const VertexMetric &q, const VertexMetric &p)
-{
-    if (q.m_major == q.m_minor) // isotropic: the same in every frame (flat regions, --isotropic)
-        return q.m_major * Eigen::Matrix2d::Identity();
-    const Eigen::Matrix2d r = frame_rotation(q.frame(), p.frame());
-    return r.transpose() * q.tensor() * r;
-}
-
-Eigen::Matrix2d tensor_sqrt(const Eigen::Matrix2d &m)
-{
-    const double s = std::sqrt(m.determinant()), t = std::sqrt(m.trace() + 2 * s);
-    return (m + s * Eigen::Matrix2d::Identity()) / t;
-}
-
-Eigen::Matrix2d tensor_inverse_sqrt(const Eigen::Matrix2d &m)
-{
-    const double s = std::sqrt(m.determinant()), t = std::sqrt(m.trace() + 2 * s);
-    Eigen::Matrix2d adjugate;
-    adjugate << m(1, 1) + s, -m(0, 1), -m(1, 0), m(0, 0) + s;
-    return adjugate / (s * t);
-}
-
 double metric_edge_length(const Vec3 &p_position, const VertexMetric &p, const Vec3 &q_position, const VertexMetric &q)
 {
     const Eigen::Matrix2d half = 0.5 * (p.tensor() + tensor_in_frame(q, p));

@@ -44,14 +44,45 @@ VertexMetric vertex_metric(const QuadricEigen &eigen, const Vec3 &outward, const
 // frames share e1 it is the exact rotation T_q^T T_p.
 Eigen::Matrix2d frame_rotation(const Eigen::Matrix<double, 3, 2> &frame_q, const Eigen::Matrix<double, 3, 2> &frame_p);
 
-// The metric of q expressed in p's tangent frame: R^T M_q R.
-Eigen::Matrix2d tensor_in_frame(const VertexMetric &q, const VertexMetric &p);
+// The metric of q expressed in p's tangent frame: R^T M_q R. Inline, in closed form: the
+// smoothing sweep calls it for every edge end. R is orthonormal, its second column
+// r = (x, y) = S_2 / |S_2| and its first one r rotated a quarter turn, with the sign of S_1
+// on it (sigma), so that R^T diag(a, b) R has the entries below; the same fallbacks as
+// frame_rotation.
+inline Eigen::Matrix2d tensor_in_frame(const VertexMetric &q, const VertexMetric &p)
+{
+    const double a = q.m_major, b = q.m_minor;
+    if (a == b) // isotropic: the same in every frame (flat regions, --isotropic)
+        return a * Eigen::Matrix2d::Identity();
+    const double s2x = q.major.dot(p.minor), s2y = q.minor.dot(p.minor);
+    const double n2 = std::sqrt(s2x * s2x + s2y * s2y);
+    if (n2 < 1e-12)
+        return q.tensor();
+    const double x = s2x / n2, y = s2y / n2;
+    const double across = q.major.dot(p.major) * y - q.minor.dot(p.major) * x; // S_1 . (y, -x)
+    const double sigma = across <= -1e-12 ? -1 : 1;
+    const double off = sigma * x * y * (a - b);
+    Eigen::Matrix2d m;
+    m << a * y * y + b * x * x, off, off, a * x * x + b * y * y;
+    return m;
+}
 
 // The square root of a 2x2 symmetric positive definite tensor, in closed form:
 // sqrt(M) = (M + s I) / t with s = sqrt(det M), t = sqrt(trace M + 2 s).
-Eigen::Matrix2d tensor_sqrt(const Eigen::Matrix2d &m);
+inline Eigen::Matrix2d tensor_sqrt(const Eigen::Matrix2d &m)
+{
+    const double s = std::sqrt(m.determinant()), t = std::sqrt(m.trace() + 2 * s);
+    return (m + s * Eigen::Matrix2d::Identity()) / t;
+}
+
 // Its inverse, adj(M + s I) / (s t).
-Eigen::Matrix2d tensor_inverse_sqrt(const Eigen::Matrix2d &m);
+inline Eigen::Matrix2d tensor_inverse_sqrt(const Eigen::Matrix2d &m)
+{
+    const double s = std::sqrt(m.determinant()), t = std::sqrt(m.trace() + 2 * s);
+    Eigen::Matrix2d adjugate;
+    adjugate << m(1, 1) + s, -m(0, 1), -m(1, 0), m(0, 0) + s;
+    return adjugate / (s * t);
+}
 
 // Eq. 4 at p: sqrt(d^T T_p M_half T_p^T d), d = p - q, M_half = (M_p + M_q in p's frame) / 2.
 double metric_edge_length(const Vec3 &p_position, const VertexMetric &p, const Vec3 &q_position, const VertexMetric &q);

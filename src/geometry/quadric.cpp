@@ -5,6 +5,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <cmath>
 
 namespace sfa {
 
@@ -27,14 +28,30 @@ Mat3 face_quadric(const Vec3 &area_vector)
 
 std::vector<Mat3> vertex_quadrics(const TriMesh &mesh, const std::vector<Vec3> &area_vectors)
 {
+    // a a^T / |a| = w w^T with w = a / sqrt|a|: one square root per face, and each vertex
+    // sums the six distinct entries of its faces' outer products.
+    std::vector<Vec3> weighted(area_vectors.size());
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t t = 0; t < mesh.num_triangles(); ++t) {
+        const double area = area_vectors[t].norm();
+        weighted[t] = area == 0 ? Vec3::Zero() : Vec3(area_vectors[t] / std::sqrt(area));
+    }
     // Gathered per vertex over its fan (rather than scattered from the faces), so that
     // vertices are independent and the loop runs in parallel.
     std::vector<Mat3> quadric(mesh.pos.size());
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
-        Mat3 sum = Mat3::Zero();
-        mesh.for_each_outgoing(v, [&](int32_t h) { sum += face_quadric(area_vectors[TriMesh::face(h)]); });
-        quadric[v] = sum;
+        double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
+        mesh.for_each_outgoing(v, [&](int32_t h) {
+            const Vec3 &w = weighted[TriMesh::face(h)];
+            xx += w.x() * w.x();
+            xy += w.x() * w.y();
+            xz += w.x() * w.z();
+            yy += w.y() * w.y();
+            yz += w.y() * w.z();
+            zz += w.z() * w.z();
+        });
+        quadric[v] << xx, xy, xz, xy, yy, yz, xz, yz, zz;
     }
     return quadric;
 }

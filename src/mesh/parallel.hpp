@@ -1,9 +1,12 @@
 // Threads for the per-vertex and per-edge loops (OpenMP). Every parallel loop writes only
-// its own elements and reduces nothing in floating point, so results are bit-identical for
-// any number of threads. A loop body must not throw (an exception cannot leave an OpenMP
+// its own elements, and floating-point sums go through ordered_sum, so results are
+// bit-identical for any number of threads. A loop body must not throw (an exception cannot leave an OpenMP
 // region): anything that can fail, allocation included, happens before or after the loop.
 // This header sits in the lowest layer because every layer loops.
 #pragma once
+
+#include <cstdint>
+#include <vector>
 
 namespace sfa {
 
@@ -25,5 +28,26 @@ public:
 private:
     int previous_;
 };
+
+// The sum of term(i) for i in [0, count): fixed blocks summed in order, in parallel, and
+// then the block sums in order, so that the rounding does not depend on the number of
+// threads. T is double or a fixed-size Eigen vector; term must not throw.
+template <class T, class Term>
+T ordered_sum(int32_t count, const T &zero, Term &&term)
+{
+    constexpr int32_t block = 4096;
+    std::vector<T> partial((count + block - 1) / block, zero);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t b = 0; b < static_cast<int32_t>(partial.size()); ++b) {
+        T sum = zero;
+        for (int32_t i = b * block; i < count && i < (b + 1) * block; ++i)
+            sum += term(i);
+        partial[b] = sum;
+    }
+    T total = zero;
+    for (const T &sum : partial)
+        total += sum;
+    return total;
+}
 
 } // namespace sfa

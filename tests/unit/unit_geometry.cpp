@@ -6,6 +6,7 @@
 #include "geometry/self_intersection.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstdarg>
 #include <cstddef>
 #include <setjmp.h>
@@ -95,6 +96,30 @@ void frame_rotation_stays_a_rotation_when_normals_differ(void **)
     assert_true((r.col(1) - s2.normalized()).norm() < 1e-14);
 }
 
+void tensor_in_frame_is_the_rotated_tensor(void **)
+{
+    // The closed form against its definition R^T M_q R with R = frame_rotation, for frames
+    // tilted every way, including the sign flip of R's first column.
+    std::srand(7);
+    const auto random_unit = [] {
+        return Vec3(std::rand() / (double)RAND_MAX - 0.5, std::rand() / (double)RAND_MAX - 0.5,
+                    std::rand() / (double)RAND_MAX - 0.5)
+            .normalized();
+    };
+    for (int trial = 0; trial < 1000; ++trial) {
+        VertexMetric p, q;
+        for (VertexMetric *m : {&p, &q}) {
+            m->normal = random_unit();
+            m->major = (random_unit().cross(m->normal)).normalized();
+            m->minor = (trial % 2 ? -1.0 : 1.0) * m->normal.cross(m->major);
+        }
+        q.m_major = 1 + 10 * std::rand() / (double)RAND_MAX;
+        q.m_minor = 1;
+        const Eigen::Matrix2d r = frame_rotation(q.frame(), p.frame());
+        assert_true((tensor_in_frame(q, p) - r.transpose() * q.tensor() * r).norm() < 1e-12 * q.m_major);
+    }
+}
+
 void metric_length_scales_with_direction(void **)
 {
     // A ridge along y at both ends: short across (x, factor sqrt(m_major)), physical along y.
@@ -163,6 +188,7 @@ int main()
         cmocka_unit_test(normal_points_outward_and_frame_is_right_handed),
         cmocka_unit_test(frame_rotation_is_exact_for_a_shared_normal),
         cmocka_unit_test(frame_rotation_stays_a_rotation_when_normals_differ),
+        cmocka_unit_test(tensor_in_frame_is_the_rotated_tensor),
         cmocka_unit_test(metric_length_scales_with_direction),
         cmocka_unit_test(tensor_square_roots_match_the_eigen_decomposition),
         cmocka_unit_test(triangle_pairs_intersect_where_they_share_a_point),

@@ -1,10 +1,11 @@
 // Unit tests of the mesh core: adjacency, one-ring walks, the invariant checker, and the
-// edge flip, split and contraction with compaction.
+// edge flip, split and contraction with compaction, and the renumbering for locality.
 #include "mesh/compact.hpp"
 #include "mesh/edge_collapse.hpp"
 #include "mesh/edge_flip.hpp"
 #include "mesh/edge_split.hpp"
 #include "mesh/invariants.hpp"
+#include "mesh/locality_order.hpp"
 #include "mesh/validate.hpp"
 
 #include <algorithm>
@@ -229,6 +230,61 @@ void splits_keep_every_invariant(void **)
     mesh_free(&sphere);
 }
 
+// Mean |a - b| over the edges (a, b): how far apart in memory neighbours are.
+double mean_index_gap(const TriMesh &mesh)
+{
+    double sum = 0;
+    for (int32_t h = 0; h < 3 * mesh.num_triangles(); ++h)
+        sum += std::abs(mesh.tail(h) - mesh.head(h));
+    return sum / (3 * mesh.num_triangles());
+}
+
+void locality_order_keeps_the_surface_and_brings_neighbours_close(void **)
+{
+    // An icosphere (and an open grid) with its vertices and triangles shuffled, as a
+    // mesh adapted through a flow has them.
+    sfa_mesh_data sphere = shape_icosphere(5, 1.0), plane = shape_grid(40, 30, 0.1);
+    for (sfa_mesh_data *shape : {&sphere, &plane}) {
+        const int32_t n = shape->nverts, m = shape->ntris;
+        std::vector<int32_t> shuffle(n);
+        for (int32_t v = 0; v < n; ++v)
+            shuffle[v] = v;
+        shapes_rng rng = rng_seed(11);
+        for (int32_t v = n - 1; v > 0; --v)
+            std::swap(shuffle[v], shuffle[rng_next(&rng) % (v + 1)]);
+        std::vector<double> xyz(3 * n);
+        std::vector<int32_t> tris(3 * m);
+        for (int32_t v = 0; v < n; ++v)
+            std::copy(shape->xyz + 3 * v, shape->xyz + 3 * v + 3, xyz.begin() + 3 * shuffle[v]);
+        for (int32_t t = 0; t < m; ++t)
+            for (int i = 0; i < 3; ++i)
+                tris[3 * ((t * 7919) % m) + i] = shuffle[shape->tris[3 * t + i]];
+        const TriMesh before = validated_mesh(MeshInput{n, xyz.data(), m, tris.data(), 0, false});
+        TriMesh after = before;
+        const std::vector<int32_t> map = order_for_locality(after);
+
+        assert_string_equal(invariant_violation(after).c_str(), "");
+        std::vector<char> hit(n, 0);
+        for (int32_t v = 0; v < n; ++v) {
+            hit[map[v]] = 1;
+            assert_true(after.pos[map[v]] == before.pos[v]);
+        }
+        assert_int_equal(std::count(hit.begin(), hit.end(), 1), n); // a permutation
+        // The same triangles, corners in the same cyclic order.
+        std::vector<Triangle> renamed, kept(after.tri);
+        for (const Triangle &c : before.tri)
+            renamed.push_back({map[c[0]], map[c[1]], map[c[2]]});
+        std::sort(renamed.begin(), renamed.end());
+        std::sort(kept.begin(), kept.end());
+        assert_true(renamed == kept);
+        print_message("%d vertices: mean index gap along edges %.0f -> %.0f\n", n, mean_index_gap(before),
+                      mean_index_gap(after));
+        assert_true(mean_index_gap(after) < mean_index_gap(before) / 10);
+    }
+    mesh_free(&sphere);
+    mesh_free(&plane);
+}
+
 void contractions_keep_every_invariant_and_the_topology(void **)
 {
     sfa_mesh_data sphere = shape_icosphere(2, 1.0), patch = shape_grid(6, 5, 0.1);
@@ -288,6 +344,7 @@ int main()
         cmocka_unit_test(splits_keep_every_invariant),
         cmocka_unit_test(contractions_keep_every_invariant_and_the_topology),
         cmocka_unit_test(contractions_that_would_break_the_surface_are_refused),
+        cmocka_unit_test(locality_order_keeps_the_surface_and_brings_neighbours_close),
     };
     return cmocka_run_group_tests_name("unit_mesh", tests, nullptr, nullptr);
 }

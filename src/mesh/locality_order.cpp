@@ -1,0 +1,93 @@
+#include "mesh/locality_order.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+
+namespace sfa {
+namespace {
+
+constexpr int bits_per_axis = 21; // 63 bits in all
+
+// The bits of x spread to every third place.
+uint64_t spread_bits(uint64_t x)
+{
+    uint64_t spread = 0;
+    for (int bit = 0; bit < bits_per_axis; ++bit)
+        spread |= ((x >> bit) & 1u) << (3 * bit);
+    return spread;
+}
+
+std::vector<uint64_t> morton_keys(const std::vector<Vec3> &pos)
+{
+    Vec3 low = Vec3::Constant(0), high = Vec3::Constant(0);
+    if (!pos.empty())
+        low = high = pos[0];
+    for (const Vec3 &p : pos) {
+        low = low.cwiseMin(p);
+        high = high.cwiseMax(p);
+    }
+    const double cells = static_cast<double>((uint64_t{1} << bits_per_axis) - 1);
+    const Vec3 scale = (high - low).cwiseMax(1e-300).cwiseInverse() * cells;
+    std::vector<uint64_t> keys(pos.size());
+    for (size_t v = 0; v < pos.size(); ++v) {
+        const Vec3 cell = (pos[v] - low).cwiseProduct(scale);
+        keys[v] = spread_bits(static_cast<uint64_t>(cell.x())) | spread_bits(static_cast<uint64_t>(cell.y())) << 1 |
+                  spread_bits(static_cast<uint64_t>(cell.z())) << 2;
+    }
+    return keys;
+}
+
+// The order of 0..n-1 by key, ties by index.
+template <class Key>
+std::vector<int32_t> sorted_by(const std::vector<Key> &key)
+{
+    std::vector<int32_t> order(key.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) { return key[a] < key[b] || (key[a] == key[b] && a < b); });
+    return order;
+}
+
+std::vector<int32_t> inverse(const std::vector<int32_t> &order)
+{
+    std::vector<int32_t> map(order.size());
+    for (size_t k = 0; k < order.size(); ++k)
+        map[order[k]] = static_cast<int32_t>(k);
+    return map;
+}
+
+} // namespace
+
+std::vector<int32_t> order_for_locality(TriMesh &mesh)
+{
+    const std::vector<int32_t> vertex_map = inverse(sorted_by(morton_keys(mesh.pos)));
+    std::vector<int32_t> first_vertex(mesh.tri.size());
+    for (size_t t = 0; t < mesh.tri.size(); ++t) {
+        const Triangle &c = mesh.tri[t];
+        first_vertex[t] = std::min({vertex_map[c[0]], vertex_map[c[1]], vertex_map[c[2]]});
+    }
+    const std::vector<int32_t> triangle_order = sorted_by(first_vertex);
+    const std::vector<int32_t> triangle_map = inverse(triangle_order);
+    const auto new_halfedge = [&](int32_t h) { return h < 0 ? -1 : 3 * triangle_map[h / 3] + h % 3; };
+
+    TriMesh out;
+    out.pos.resize(mesh.pos.size());
+    out.v2h.resize(mesh.v2h.size());
+    for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
+        out.pos[vertex_map[v]] = mesh.pos[v];
+        out.v2h[vertex_map[v]] = new_halfedge(mesh.v2h[v]);
+    }
+    out.tri.resize(mesh.tri.size());
+    out.opp.resize(mesh.opp.size());
+    for (int32_t t = 0; t < mesh.num_triangles(); ++t) {
+        const int32_t old = triangle_order[t];
+        const Triangle &c = mesh.tri[old];
+        out.tri[t] = {vertex_map[c[0]], vertex_map[c[1]], vertex_map[c[2]]};
+        for (int i = 0; i < 3; ++i)
+            out.opp[3 * t + i] = new_halfedge(mesh.opp[3 * old + i]);
+    }
+    mesh = std::move(out);
+    return vertex_map;
+}
+
+} // namespace sfa
