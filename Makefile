@@ -112,7 +112,7 @@ $(FLIB_A): build/fortran/surfadapt.o
 # ------------------------------------------------------------------ command-line tool
 $(CLI): $(APP_OBJS) $(LIB_SO) $(LIB_DEV)
 	@mkdir -p $(@D)
-	$(CXX) -o $@ $(APP_OBJS) -Llib -lsurfadapt -Wl,-rpath,'$$ORIGIN/../lib'
+	$(CXX) $(OPENMP) -o $@ $(APP_OBJS) -Llib -lsurfadapt -Wl,-rpath,'$$ORIGIN/../lib'
 
 demo: all
 	@mkdir -p build/demo

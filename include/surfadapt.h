@@ -142,16 +142,22 @@ enum sfa_param {
         default (OMP_NUM_THREADS, else every core); n >= 1 uses at most n, so that an MPI
         host can keep one thread per rank. A whole number. Results never depend on it. */
     SFA_PARAM_THREADS = 17,
-    /** Denoising weight in [0, 1] (paper §5.1, §5.2.2), default 0 (off). Each smoothing
+    /** Denoising weight w in [0, 1] (paper §5.1, §5.2.2), default 0 (off). Each smoothing
         sweep (sfa_smooth(), and those of sfa_adapt()) then also moves every smooth vertex
-        along its normal by up to half an umbrella step of normal diffusion, scaled by this
-        weight and by how noisy the vertex looks to the quadric analysis (the ratio of its
-        second to first eigenvalue as a fraction of the one that would make it a ridge):
-        jagged fans are flattened, gently curved ones barely move, features never. On a
-        closed surface the enclosed volume is restored after each sweep, so the motion
-        removes noise without shrinking the body; an open surface is not corrected. For
-        flows that grow noise, like the second half of the Enright test. */
-    SFA_PARAM_DENOISE = 18
+        along its normal n by w/4 n.(U_v - mean of U_q over its neighbours q), with U the
+        umbrella vector (mean of the neighbours minus the vertex): a step of bi-Laplacian
+        normal diffusion, which flattens jagged fans (noise at the scale of an edge) and
+        barely moves smoothly curved ones; features never move. On a closed surface the
+        enclosed volume is restored after each sweep, so the motion removes noise without
+        shrinking the body; an open surface is not corrected. For flows that grow noise,
+        like the second half of the Enright test. */
+    SFA_PARAM_DENOISE = 18,
+    /** The most passes of repair and optimization one sfa_adapt() call makes, a whole
+        number in [1, 100], default 8; fewer if a pass changes the connectivity around at
+        most 1 in 100 vertices. A host that adapts every few steps of a flow sets 1: the
+        second pass of a call changes only about 1 in 200 vertices but costs as much as the
+        first, and what one pass leaves is picked up by the next call. */
+    SFA_PARAM_ADAPT_PASSES = 19
 };
 
 /** Quantities for sfa_measure(). */
@@ -400,8 +406,8 @@ int sfa_smooth(sfa_surface *s, int32_t iterations);
 /**
  * The full adaptation (paper §3–§4) towards the edge length ::SFA_PARAM_EDGE_LENGTH (0:
  * the mean edge length of the mesh last given to sfa_set_mesh()). Features are detected
- * once and kept through the call. Then, up to 8 times, until a pass changes the
- * connectivity around at most 1 in 100 vertices: edge splitting (§4.1), edge
+ * once and kept through the call. Then, up to ::SFA_PARAM_ADAPT_PASSES times (default
+ * 8), until a pass changes the connectivity around at most 1 in 100 vertices: edge splitting (§4.1), edge
  * contraction (§4.2), anisotropic edge flipping (§3.3) and two smoothing sweeps (as
  * sfa_smooth()), each after a fresh analysis. Every
  * threshold is a parameter (§4.3). A closed surface ends with the enclosed volume it

@@ -38,6 +38,8 @@ int run_flow(const FlowRun &run, FlowResult &result)
     if (run.isotropic)
         sfa_set_param(s, SFA_PARAM_ANISOTROPIC, 0);
     sfa_set_param(s, SFA_PARAM_DENOISE, run.denoise);
+    // Adapted every few steps: one pass per call, the next call picks up what it leaves.
+    sfa_set_param(s, SFA_PARAM_ADAPT_PASSES, 1);
 
     const double volume0 = measure(s, SFA_MEASURE_VOLUME), area0 = measure(s, SFA_MEASURE_AREA);
     std::printf("%s: sphere of radius %g at (%g, %g, %g), %d vertices; T = %g, dt = %g, %d steps; %s adaptation "

@@ -26,6 +26,7 @@ enum class Param : int {
     flip_dihedral_angle,
     threads,
     denoise,
+    adapt_passes,
     count
 };
 

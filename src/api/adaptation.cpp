@@ -14,9 +14,6 @@
 using namespace sfa;
 
 namespace {
-// One sfa_adapt call makes at most this many passes of repair and optimization; a host
-// that wants more calls it again (each call starts from a fresh analysis anyway).
-constexpr int max_adapt_passes = 8;
 // Smoothing sweeps per pass: two let the vertices settle around what repair changed.
 constexpr int smoothing_sweeps_per_pass = 2;
 } // namespace
@@ -55,7 +52,8 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
         const Parameters &p = s->params;
         const double edge_length = p.get(Param::edge_length) > 0 ? p.get(Param::edge_length) : s->mean_edge_length_at_set;
         const AdaptSettings settings{feature_thresholds(p), metric_bounds(p), p.get(Param::flip_dihedral_angle) * radians,
-                                     repair_settings(p, edge_length), max_adapt_passes, smoothing_sweeps_per_pass,
+                                     repair_settings(p, edge_length), static_cast<int>(p.get(Param::adapt_passes)),
+                                     smoothing_sweeps_per_pass,
                                      p.get(Param::denoise)};
 
         // Work on copies; the velocities travel as one more field. Commit only at the end.

@@ -26,6 +26,7 @@ static double expected_default(int key)
     case SFA_PARAM_FLIP_DIHEDRAL_ANGLE: return 20;
     case SFA_PARAM_THREADS: return 0;
     case SFA_PARAM_DENOISE: return 0;
+    case SFA_PARAM_ADAPT_PASSES: return 8;
     default: return NAN;
     }
 }
@@ -53,6 +54,7 @@ static double valid_value(int key)
     case SFA_PARAM_FLIP_DIHEDRAL_ANGLE: return 10;
     case SFA_PARAM_THREADS: return 1;
     case SFA_PARAM_DENOISE: return 1;
+    case SFA_PARAM_ADAPT_PASSES: return 1;
     default: return NAN;
     }
 }
@@ -80,6 +82,7 @@ static int invalid_values(int key, double out[4])
     case SFA_PARAM_DROP_UNREFERENCED: out[0] = 0.5; out[1] = 2; out[2] = -1; return 3;
     case SFA_PARAM_THREADS: out[0] = -1; out[1] = 1.5; out[2] = 5000; return 3;
     case SFA_PARAM_DENOISE: out[0] = -1e-9; out[1] = 1.0000001; return 2;
+    case SFA_PARAM_ADAPT_PASSES: out[0] = 0; out[1] = 2.5; out[2] = 101; return 3;
     default: return 0;
     }
 }
