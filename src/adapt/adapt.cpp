@@ -40,7 +40,12 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
         const int32_t contractions = timed(seconds.repair, [&] {
             return contraction_pass(mesh, before_contraction, settings.repair, features, fields);
         });
-        const SurfaceAnalysis before_flips = analysis();
+        // The flips read the quadrics and the ridges only.
+        const SurfaceAnalysis before_flips = timed(seconds.analysis, [&] {
+            SurfaceAnalysis a = analyze_quadrics(mesh);
+            a.features = features.as_features(mesh);
+            return a;
+        });
         const int32_t flips = timed(seconds.flipping, [&] {
             return flipping_pass(mesh, before_flips, FlipSettings{settings.metric, settings.flip_max_dihedral});
         });

@@ -15,7 +15,8 @@ struct FlipSettings {
 // each at most once, if they still fail the test when their turn comes and the flip keeps
 // the surface (no ridge or boundary edge, no duplicate edge, no fold, both the old and the
 // new pair of triangles within max_dihedral of flat). Vertex positions never change.
-// Returns the number of flips.
+// `analysis` needs the quadrics and the features only (analyze_quadrics). Returns the
+// number of flips.
 int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const FlipSettings &settings);
 
 } // namespace sfa

@@ -8,6 +8,7 @@
 #include "geometry/measures.hpp"
 #include "mesh/invariants.hpp"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
@@ -25,21 +26,29 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
     return call(s, "sfa_smooth", [&] {
         require(iterations >= 0, "iterations must be >= 0");
         require_mesh(s);
-        // Work on a copy of the positions and fields; commit only when every sweep succeeded.
-        TriMesh mesh = s->mesh;
+        // Sweeps move vertices only: work on the handle's mesh with its positions saved (the
+        // connectivity is not copied, a step of a flow calls this on every step), and on a
+        // copy of the fields; if anything fails, the positions go back.
+        TriMesh &mesh = s->mesh;
+        const std::vector<Vec3> saved_positions = mesh.pos;
         std::vector<VertexField> fields = s->fields;
         PhaseTimes seconds;
-        const double volume = enclosed_volume(mesh);
-        for (int32_t sweep = 0; sweep < iterations; ++sweep) {
-            const SurfaceAnalysis analysis = timed(seconds.analysis, [&] { return current_analysis(s, mesh); });
-            PhaseClock clock(seconds.smoothing);
-            std::vector<Vec3> moved = smoothing_sweep(mesh, analysis, s->params.get(Param::denoise));
-            fields = fields_at_moved_vertices(mesh, moved, fields);
-            mesh.pos.swap(moved);
-            if (mesh.is_closed())
-                restore_enclosed_volume(mesh, analysis.features.rank, volume);
+        try {
+            const double volume = enclosed_volume(mesh);
+            const bool closed = mesh.is_closed();
+            for (int32_t sweep = 0; sweep < iterations; ++sweep) {
+                const SurfaceAnalysis analysis = timed(seconds.analysis, [&] { return current_analysis(s, mesh); });
+                PhaseClock clock(seconds.smoothing);
+                std::vector<Vec3> moved = smoothing_sweep(mesh, analysis, s->params.get(Param::denoise));
+                fields = fields_at_moved_vertices(mesh, moved, fields);
+                mesh.pos.swap(moved);
+                if (closed)
+                    restore_enclosed_volume(mesh, analysis.features.rank, volume);
+            }
+        } catch (...) {
+            std::copy(saved_positions.begin(), saved_positions.end(), mesh.pos.begin()); // same size: no allocation
+            throw;
         }
-        s->mesh.pos.swap(mesh.pos);
         s->fields.swap(fields);
         s->seconds_spent += seconds;
     });

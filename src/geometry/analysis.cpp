@@ -29,6 +29,13 @@ SurfaceAnalysis analyze_geometry(const TriMesh &mesh, const MetricBounds &bounds
     return geometry_of(mesh, face_area_vectors(mesh), bounds);
 }
 
+SurfaceAnalysis analyze_quadrics(const TriMesh &mesh)
+{
+    SurfaceAnalysis analysis;
+    analysis.quadric = vertex_quadrics(mesh, face_area_vectors(mesh));
+    return analysis;
+}
+
 SurfaceAnalysis analyze_surface(const TriMesh &mesh, const FeatureThresholds &thresholds, const MetricBounds &bounds)
 {
     const std::vector<Vec3> area_vectors = face_area_vectors(mesh);

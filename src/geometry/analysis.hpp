@@ -20,4 +20,8 @@ SurfaceAnalysis analyze_surface(const TriMesh &mesh, const FeatureThresholds &th
 // features of their own.
 SurfaceAnalysis analyze_geometry(const TriMesh &mesh, const MetricBounds &bounds);
 
+// The quadrics alone (eigen, metric and features left empty): for edge flipping, which
+// decomposes sums of them itself (flip.hpp).
+SurfaceAnalysis analyze_quadrics(const TriMesh &mesh);
+
 } // namespace sfa

@@ -26,10 +26,12 @@ Vec3 onto_fitted_surface(const TriMesh &mesh, int32_t v, const VertexMetric &fra
     mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
         const Vec3 d = mesh.pos[w] - p;
         const double u = d.dot(frame.major), s = d.dot(frame.minor), h = d.dot(frame.normal);
-        Vector5 basis;
-        basis << u * u / scale2, u * s / scale2, s * s / scale2, u / scale, s / scale;
-        normal_matrix += basis * basis.transpose();
-        right_side += basis * h;
+        const double basis[5] = {u * u / scale2, u * s / scale2, s * s / scale2, u / scale, s / scale};
+        for (int i = 0; i < 5; ++i) {
+            for (int j = 0; j <= i; ++j) // the lower triangle: all the Cholesky factorization reads
+                normal_matrix(i, j) += basis[i] * basis[j];
+            right_side[i] += basis[i] * h;
+        }
     });
     const Eigen::LLT<Matrix5> solver(normal_matrix);
     // Neighbours on two lines through v (or fewer directions) cannot fix three

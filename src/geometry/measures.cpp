@@ -101,19 +101,42 @@ double max_aspect_ratio(const TriMesh &mesh)
 
 double max_normal_turn_degrees(const TriMesh &mesh)
 {
-    double largest = 0;
-#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(max : largest)
-    for (int32_t h = 0; h < 3 * mesh.num_triangles(); ++h) {
-        const int32_t twin = mesh.opp[h];
-        if (twin < h)
-            continue; // boundary, or seen from the other side
-        const auto normal = [&](int32_t t) {
-            const Triangle &c = mesh.tri[t];
-            return Vec3((mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]));
-        };
-        largest = std::max(largest, angle_between(normal(TriMesh::face(h)), normal(TriMesh::face(twin))));
+    const auto normal = [&](int32_t t) {
+        const Triangle &c = mesh.tri[t];
+        return Vec3((mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]));
+    };
+    // The edge whose normals have the smallest cosine (ties: the lowest half-edge, so the
+    // same for any number of threads), found without an arc tangent per edge; then its
+    // angle, accurately. A flat triangle has no normal and turns nothing, as before.
+    double smallest_cos = 2;
+    int32_t sharpest = -1;
+#pragma omp parallel num_threads(loop_threads())
+    {
+        double local_cos = 2;
+        int32_t local_edge = -1;
+#pragma omp for schedule(static) nowait
+        for (int32_t h = 0; h < 3 * mesh.num_triangles(); ++h) {
+            const int32_t twin = mesh.opp[h];
+            if (twin < h)
+                continue; // boundary, or seen from the other side
+            const Vec3 a = normal(TriMesh::face(h)), b = normal(TriMesh::face(twin));
+            const double lengths = a.norm() * b.norm();
+            const double cosine = lengths > 0 ? a.dot(b) / lengths : 1.0;
+            if (cosine < local_cos) {
+                local_cos = cosine;
+                local_edge = h;
+            }
+        }
+#pragma omp critical
+        if (local_edge >= 0 && (local_cos < smallest_cos || (local_cos == smallest_cos && local_edge < sharpest))) {
+            smallest_cos = local_cos;
+            sharpest = local_edge;
+        }
     }
-    return largest * degrees_per_radian;
+    if (sharpest < 0)
+        return 0; // no interior edge
+    return angle_between(normal(TriMesh::face(sharpest)), normal(TriMesh::face(mesh.opp[sharpest]))) *
+           degrees_per_radian;
 }
 
 } // namespace sfa

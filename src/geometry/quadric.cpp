@@ -64,13 +64,18 @@ QuadricEigen decompose(const Mat3 &quadric)
     // of |A|: far below what the thresholds on lambda_i/lambda1 (>= 1e-3) can notice, and
     // loose enough that the umbilic points of a sphere (lambda2 ~ lambda3) stay on the fast
     // path. Otherwise use the iterative solver.
+    // Its errors grow as round-off over the gap between eigenvalues, so the check is
+    // needed only where a gap is below 1e-3 |A|, where they could reach the tolerance.
     Eigen::SelfAdjointEigenSolver<Mat3> solver;
     solver.computeDirect(quadric);
     const double scale = std::max(quadric.norm(), 1e-300);
-    const Mat3 residual = quadric * solver.eigenvectors() - solver.eigenvectors() * solver.eigenvalues().asDiagonal();
-    const double orthogonality = (solver.eigenvectors().transpose() * solver.eigenvectors() - Mat3::Identity()).norm();
-    if (!(residual.norm() <= 1e-10 * scale && orthogonality <= 1e-10))
-        solver.compute(quadric);
+    const Eigen::Vector3d &values = solver.eigenvalues();
+    if (!(std::min(values[1] - values[0], values[2] - values[1]) > 1e-3 * scale)) {
+        const Mat3 residual = quadric * solver.eigenvectors() - solver.eigenvectors() * values.asDiagonal();
+        const double orthogonality = (solver.eigenvectors().transpose() * solver.eigenvectors() - Mat3::Identity()).norm();
+        if (!(residual.norm() <= 1e-10 * scale && orthogonality <= 1e-10))
+            solver.compute(quadric);
+    }
     // Eigen sorts increasingly; the paper numbers them decreasingly.
     QuadricEigen out;
     for (int i = 0; i < 3; ++i) {
