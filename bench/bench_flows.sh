@@ -1,14 +1,34 @@
 #!/bin/sh
-# The paper's three flow experiments at full size through the command-line tool, each
-# once (they take minutes): one JSON line per run with the total time, the time per call
-# (advection, sfa_smooth, sfa_adapt) and per phase inside them (analysis, smoothing,
-# flipping, splitting and contraction), vertex counts, volume errors, the largest normal
-# turn and crossings, and the ratio of smoothing + adaptation time to bare advection time
-# in the same run.
+# The paper's three flow experiments at full size through the command-line tool: one JSON
+# line per run with the total time, the time per call (advection, sfa_smooth, sfa_adapt)
+# and per phase inside them (analysis, smoothing, flipping, splitting and contraction),
+# vertex counts, volume errors, the largest normal turn and crossings, and the ratio of
+# smoothing + adaptation time to bare advection time in the same run. The shorter runs are
+# repeated (RUNS, default 3) and a last line per experiment gives the median time.
 set -eu
 cd "$(dirname "$0")/.."
 tool=${SURFADAPT:-bin/surfadapt}
-"$tool" enright --json --report-every 100000 | grep '^{'
-"$tool" vortex --period 2 --json --report-every 100000 | grep '^{'
-"$tool" vortex --period 2 --isotropic --json --report-every 100000 | grep '^{'
-"$tool" vortex --period 6 --json --report-every 100000 | grep '^{'
+runs=${RUNS:-3}
+
+# flow NAME RUNS ARGS...: the runs' JSON lines, then their median time.
+flow() {
+    name=$1 count=$2
+    shift 2
+    times=""
+    i=0
+    while [ "$i" -lt "$count" ]; do
+        line=$("$tool" "$@" --json --report-every 100000 | grep '^{')
+        echo "$line"
+        times="$times $(echo "$line" | sed 's/.*"seconds":\([0-9.]*\).*/\1/')"
+        i=$((i + 1))
+    done
+    echo "$times" | tr ' ' '\n' | grep . | sort -n |
+        awk -v name="$name" -v n="$count" '{ t[NR] = $1 } END {
+            m = (NR % 2) ? t[(NR + 1) / 2] : (t[NR / 2] + t[NR / 2 + 1]) / 2
+            printf "{\"bench\":\"flow_median\",\"experiment\":\"%s\",\"runs\":%d,\"median_seconds\":%.2f}\n", name, n, m }'
+}
+
+flow enright "$runs" enright
+flow vortex_t2 "$runs" vortex --period 2
+flow vortex_t2_isotropic "$runs" vortex --period 2 --isotropic
+flow vortex_t6 1 vortex --period 6

@@ -19,40 +19,49 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
 {
     AdaptCounts counts;
     PhaseTimes &seconds = counts.seconds;
-    CarriedFeatures features(
-        timed(seconds.analysis, [&] { return analyze_surface(mesh, settings.features, settings.metric).features; }));
-    // The geometry of the mesh as it now is, with the carried features.
-    const auto analysis = [&] {
+    // Features are detected once; the geometry is analysed in full where every vertex has
+    // moved (at the start and after each sweep). After splitting, contraction and flipping
+    // only the vertices whose fans changed are analysed anew (update_geometry): the same
+    // result as a full analysis, for a fraction of its cost.
+    SurfaceAnalysis geometry =
+        timed(seconds.analysis, [&] { return analyze_surface(mesh, settings.features, settings.metric); });
+    CarriedFeatures features(geometry.features);
+    std::vector<char> changed;
+    const auto analyse_all = [&] {
         PhaseClock clock(seconds.analysis);
-        SurfaceAnalysis a = analyze_geometry(mesh, settings.metric);
-        a.features = features.as_features(mesh);
-        return a;
+        geometry = analyze_geometry(mesh, settings.metric);
+        geometry.features = features.as_features(mesh);
+    };
+    const auto analyse_changed = [&] {
+        PhaseClock clock(seconds.analysis);
+        update_geometry(mesh, changed, settings.metric, geometry);
+        geometry.features = features.as_features(mesh);
+        changed.assign(mesh.pos.size(), 0);
     };
     const bool closed = mesh.is_closed();
     const double volume = enclosed_volume(mesh);
     while (counts.passes < settings.max_passes) {
-        ++counts.passes;
+        if (++counts.passes > 1)
+            analyse_all(); // the last pass's sweeps moved every vertex
+        changed.assign(mesh.pos.size(), 0);
         // Repair first (§4): the density the desired edge length asks for, and no extreme
         // angles; then optimization (§3) of the repaired mesh.
         const int32_t splits =
-            timed(seconds.repair, [&] { return splitting_pass(mesh, settings.repair, features, fields); });
-        const SurfaceAnalysis before_contraction = analysis();
+            timed(seconds.repair, [&] { return splitting_pass(mesh, settings.repair, features, fields, changed); });
+        analyse_changed();
         const int32_t contractions = timed(seconds.repair, [&] {
-            return contraction_pass(mesh, before_contraction, settings.repair, features, fields);
+            return contraction_pass(mesh, geometry, settings.repair, features, fields, changed);
         });
-        // The flips read the quadrics and the ridges only.
-        const SurfaceAnalysis before_flips = timed(seconds.analysis, [&] {
-            SurfaceAnalysis a = analyze_quadrics(mesh);
-            a.features = features.as_features(mesh);
-            return a;
-        });
+        analyse_changed();
         const int32_t flips = timed(seconds.flipping, [&] {
-            return flipping_pass(mesh, before_flips, FlipSettings{settings.metric, settings.flip_max_dihedral});
+            return flipping_pass(mesh, geometry, FlipSettings{settings.metric, settings.flip_max_dihedral}, &changed);
         });
+        analyse_changed();
         for (int sweep = 0; sweep < settings.smoothing_sweeps; ++sweep) {
-            const SurfaceAnalysis before_sweep = analysis();
+            if (sweep > 0)
+                analyse_all();
             PhaseClock clock(seconds.smoothing);
-            std::vector<Vec3> moved = smoothing_sweep(mesh, before_sweep, settings.denoise);
+            std::vector<Vec3> moved = smoothing_sweep(mesh, geometry, settings.denoise);
             fields = fields_at_moved_vertices(mesh, moved, fields);
             mesh.pos.swap(moved);
         }

@@ -27,8 +27,8 @@ struct AdaptCounts {
 };
 
 // Features are detected once, then carried through the call (carried_features.hpp). Each
-// pass: split, contract, flip, then smooth, every step after a fresh analysis of the
-// geometry as it then is; until a pass changes the connectivity of at most 1 in 100
+// pass: split, contract, flip, then smooth, every step on the geometry as it then is
+// (analysed anew where the step before changed it); until a pass changes the connectivity of at most 1 in 100
 // vertices or max_passes were made. A closed surface then gets its enclosed volume back
 // (restore_enclosed_volume), and if edges were split or contracted, the mesh is renumbered
 // for locality (locality_order.hpp). The fields (one value set per vertex) follow every

@@ -168,8 +168,8 @@ struct Candidate {
 
 } // namespace
 
-int32_t contraction_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const RepairSettings &settings,
-                         CarriedFeatures &features, std::vector<VertexField> &fields)
+int32_t contraction_pass(TriMesh &mesh, SurfaceAnalysis &analysis, const RepairSettings &settings,
+                         CarriedFeatures &features, std::vector<VertexField> &fields, std::vector<char> &changed)
 {
     RidgeSet &ridges = features.ridges;
     // Judging is independent per edge (in parallel); collecting is in half-edge order.
@@ -210,6 +210,9 @@ int32_t contraction_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const R
                 ridge_neighbours.push_back(w);
         });
         collapse_edge(mesh, h, merged);
+        // The merged vertex moved: every fan it is in changed.
+        changed[keep] = 1;
+        mesh.for_each_neighbour(keep, [&](int32_t w, int32_t) { changed[w] = 1; });
         set_interpolated(fields, keep, stencil);
         features.rank[keep] = merged_rank;
         ridges.remove(gone, keep);
@@ -222,6 +225,11 @@ int32_t contraction_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const R
     const std::vector<int32_t> vertex_map = compact(mesh);
     renumber_fields(fields, vertex_map);
     features.renumber(vertex_map);
+    renumber_vertices(analysis, vertex_map);
+    for (size_t v = 0; v < vertex_map.size(); ++v)
+        if (vertex_map[v] >= 0) // new numbers never exceed old ones: in place, in order
+            changed[vertex_map[v]] = changed[v];
+    changed.resize(mesh.pos.size());
     return contractions;
 }
 

@@ -19,9 +19,11 @@ namespace sfa {
 // (that would merge two ridge curves), anything the link condition forbids, and any result
 // that turns a face by more than 60 degrees or nearly flattens it. Fields are interpolated
 // at the merged vertex, and the features follow. Ends with compaction (the mesh, fields
-// and features are dense again). `analysis` gives the metric of the mesh as it was.
+// and features are dense again). `analysis` gives the metric of the mesh as it was, and is
+// renumbered with the mesh; `changed` (one mark per vertex) too, after every vertex whose
+// fan a contraction changed was marked in it (update_geometry).
 // Returns the number of contractions.
-int32_t contraction_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const RepairSettings &settings,
-                         CarriedFeatures &features, std::vector<VertexField> &fields);
+int32_t contraction_pass(TriMesh &mesh, SurfaceAnalysis &analysis, const RepairSettings &settings,
+                         CarriedFeatures &features, std::vector<VertexField> &fields, std::vector<char> &changed);
 
 } // namespace sfa

@@ -97,7 +97,8 @@ struct Candidate {
 
 } // namespace
 
-int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const FlipSettings &settings)
+int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const FlipSettings &settings,
+                      std::vector<char> *changed)
 {
     const double cos_max_dihedral = std::cos(settings.max_dihedral);
     std::vector<Mat3> quadric = analysis.quadric;
@@ -133,6 +134,11 @@ int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const Flip
         if (h < 0 || !may_flip(h) || !judge(mesh, h, quadric, settings, cos_max_dihedral).flip)
             continue;
         const int32_t t0 = TriMesh::face(h), t1 = TriMesh::face(mesh.opp[h]);
+        if (changed) {
+            const FlipQuad quad = flip_quad(mesh, h);
+            for (int32_t v : {quad.a, quad.b, quad.p, quad.q})
+                (*changed)[v] = 1;
+        }
         update_quadrics(quadric, mesh, t0, t1, -1);
         const FlipMoves moves = flip_edge(mesh, h);
         update_quadrics(quadric, mesh, t0, t1, +1);

@@ -15,8 +15,10 @@ struct FlipSettings {
 // each at most once, if they still fail the test when their turn comes and the flip keeps
 // the surface (no ridge or boundary edge, no duplicate edge, no fold, both the old and the
 // new pair of triangles within max_dihedral of flat). Vertex positions never change.
-// `analysis` needs the quadrics and the features only (analyze_quadrics). Returns the
-// number of flips.
-int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const FlipSettings &settings);
+// `analysis` needs the quadrics and the features only. Returns the number of flips.
+// The four vertices of every flipped quad are marked in `changed`, if given (one mark per
+// vertex; update_geometry).
+int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const FlipSettings &settings,
+                      std::vector<char> *changed = nullptr);
 
 } // namespace sfa

@@ -92,7 +92,7 @@ struct Candidate {
 } // namespace
 
 int32_t splitting_pass(TriMesh &mesh, const RepairSettings &settings, CarriedFeatures &features,
-                       std::vector<VertexField> &fields)
+                       std::vector<VertexField> &fields, std::vector<char> &changed)
 {
     // Judging is independent per edge (in parallel); collecting is in half-edge order.
     const int32_t halfedges = 3 * mesh.num_triangles();
@@ -121,7 +121,12 @@ int32_t splitting_pass(TriMesh &mesh, const RepairSettings &settings, CarriedFea
         const bool on_ridge = features.ridges.contains(c.a, c.b) || mesh.opp[h] < 0;
         const Vec3 position = new_vertex_position(mesh, h, on_ridge, features);
         const Stencil stencil = stencil_over(mesh, position, [&](auto &&visit) { for_each_edge_face(mesh, h, visit); });
+        for_each_edge_face(mesh, h, [&](int32_t f) {
+            for (int32_t v : mesh.tri[f])
+                changed[v] = 1;
+        });
         const int32_t m = split_edge(mesh, h, position);
+        changed.push_back(1);
         append_interpolated(fields, stencil);
         features.rank.push_back(on_ridge ? 1 : 0);
         if (on_ridge) {

@@ -17,6 +17,6 @@ namespace sfa {
 // to the midpoint of the curve through the ridge neighbours (the centre of a straight one). Fields get the values interpolated there. Returns the
 // number of splits; the mesh stays dense (vertices and triangles are appended).
 int32_t splitting_pass(TriMesh &mesh, const RepairSettings &settings, CarriedFeatures &features,
-                       std::vector<VertexField> &fields);
+                       std::vector<VertexField> &fields, std::vector<char> &changed);
 
 } // namespace sfa

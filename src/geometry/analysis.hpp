@@ -20,8 +20,16 @@ SurfaceAnalysis analyze_surface(const TriMesh &mesh, const FeatureThresholds &th
 // features of their own.
 SurfaceAnalysis analyze_geometry(const TriMesh &mesh, const MetricBounds &bounds);
 
-// The quadrics alone (eigen, metric and features left empty): for edge flipping, which
-// decomposes sums of them itself (flip.hpp).
-SurfaceAnalysis analyze_quadrics(const TriMesh &mesh);
+// Brings the geometry of `analysis` up to date after local changes: the vertices marked in
+// `changed` (one mark per vertex of the mesh as it now is: their fans changed, or they are
+// new) get their quadric, decomposition and metric anew. Every other vertex's fan is as it
+// was, so its entries are what analyze_geometry would give, to the last bit; this costs a
+// fraction of it where few vertices changed. Features are left as they are.
+void update_geometry(const TriMesh &mesh, const std::vector<char> &changed, const MetricBounds &bounds,
+                     SurfaceAnalysis &analysis);
+
+// Renumbers the per-vertex entries after compaction (vertex v's go to vertex_map[v], or
+// away if it is -1).
+void renumber_vertices(SurfaceAnalysis &analysis, const std::vector<int32_t> &vertex_map);
 
 } // namespace sfa

@@ -13,47 +13,24 @@ std::vector<Vec3> face_area_vectors(const TriMesh &mesh)
 {
     std::vector<Vec3> area(mesh.tri.size());
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t t = 0; t < mesh.num_triangles(); ++t) {
-        const Triangle &c = mesh.tri[t];
-        area[t] = 0.5 * (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]);
-    }
+    for (int32_t t = 0; t < mesh.num_triangles(); ++t)
+        area[t] = face_area_vector(mesh, t);
     return area;
+}
+
+std::vector<Vec3> weighted_normals(const std::vector<Vec3> &area_vectors)
+{
+    std::vector<Vec3> weighted(area_vectors.size());
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t t = 0; t < static_cast<int32_t>(area_vectors.size()); ++t)
+        weighted[t] = weighted_normal(area_vectors[t]);
+    return weighted;
 }
 
 Mat3 face_quadric(const Vec3 &area_vector)
 {
     const double area = area_vector.norm();
     return area == 0 ? Mat3::Zero() : Mat3(area_vector * area_vector.transpose() / area);
-}
-
-std::vector<Mat3> vertex_quadrics(const TriMesh &mesh, const std::vector<Vec3> &area_vectors)
-{
-    // a a^T / |a| = w w^T with w = a / sqrt|a|: one square root per face, and each vertex
-    // sums the six distinct entries of its faces' outer products.
-    std::vector<Vec3> weighted(area_vectors.size());
-#pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t t = 0; t < mesh.num_triangles(); ++t) {
-        const double area = area_vectors[t].norm();
-        weighted[t] = area == 0 ? Vec3::Zero() : Vec3(area_vectors[t] / std::sqrt(area));
-    }
-    // Gathered per vertex over its fan (rather than scattered from the faces), so that
-    // vertices are independent and the loop runs in parallel.
-    std::vector<Mat3> quadric(mesh.pos.size());
-#pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
-        double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
-        mesh.for_each_outgoing(v, [&](int32_t h) {
-            const Vec3 &w = weighted[TriMesh::face(h)];
-            xx += w.x() * w.x();
-            xy += w.x() * w.y();
-            xz += w.x() * w.z();
-            yy += w.y() * w.y();
-            yz += w.y() * w.z();
-            zz += w.z() * w.z();
-        });
-        quadric[v] << xx, xy, xz, xy, yy, yz, xz, yz, zz;
-    }
-    return quadric;
 }
 
 QuadricEigen decompose(const Mat3 &quadric)

@@ -1,0 +1,88 @@
+// Unit test of the partial analysis inside an adaptation pass: after splitting, contraction
+// and flipping, the vertices those passes mark are analysed anew (update_geometry), and the
+// result must be what a full analysis of the changed mesh gives, to the last bit.
+#include "adapt/contract.hpp"
+#include "adapt/flip.hpp"
+#include "adapt/split.hpp"
+#include "mesh/validate.hpp"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstddef>
+#include <setjmp.h>
+#include <vector>
+
+extern "C" {
+#include <cmocka.h>
+
+#include "support/shapes.h"
+}
+
+using namespace sfa;
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+const FeatureThresholds thresholds{45 * pi / 180, 20 * pi / 180, 40 * pi / 180};
+const MetricBounds bounds{8 * pi / 180, 30 * pi / 180, true};
+
+// Bitwise equality of every per-vertex entry.
+void assert_same_geometry(const SurfaceAnalysis &updated, const SurfaceAnalysis &full)
+{
+    assert_int_equal(updated.metric.size(), full.metric.size());
+    for (size_t v = 0; v < full.metric.size(); ++v) {
+        assert_true(updated.quadric[v] == full.quadric[v]);
+        assert_true(updated.eigen[v].values == full.eigen[v].values);
+        assert_true(updated.eigen[v].vectors == full.eigen[v].vectors);
+        const VertexMetric &a = updated.metric[v], &b = full.metric[v];
+        assert_true(a.normal == b.normal && a.major == b.major && a.minor == b.minor);
+        assert_true(a.m_major == b.m_major && a.m_minor == b.m_minor);
+    }
+}
+
+void each_pass_leaves_the_analysis_a_full_one_would_give(void **)
+{
+    // A jittered ellipsoid refined (splits) and then coarsened (contractions); flips follow both.
+    sfa_mesh_data shape = shape_ellipsoid(3, 1, 0.6, 0.3);
+    shapes_rng rng = rng_seed(5);
+    for (int32_t k = 0; k < 3 * shape.nverts; ++k)
+        shape.xyz[k] += 0.01 * (rng_uniform(&rng) - 0.5);
+    TriMesh mesh = validated_mesh(MeshInput{shape.nverts, shape.xyz, shape.ntris, shape.tris, 0, false});
+    const Parameters parameters;
+    int32_t splits = 0, contractions = 0, flips = 0;
+    for (double length : {0.06, 0.25}) {
+        SurfaceAnalysis geometry = analyze_surface(mesh, thresholds, bounds);
+        CarriedFeatures features(geometry.features);
+        std::vector<VertexField> fields;
+        const RepairSettings repair = repair_settings(parameters, length);
+        std::vector<char> changed(mesh.pos.size(), 0);
+
+        splits += splitting_pass(mesh, repair, features, fields, changed);
+        update_geometry(mesh, changed, bounds, geometry);
+        assert_same_geometry(geometry, analyze_geometry(mesh, bounds));
+
+        changed.assign(mesh.pos.size(), 0);
+        contractions += contraction_pass(mesh, geometry, repair, features, fields, changed);
+        update_geometry(mesh, changed, bounds, geometry);
+        assert_same_geometry(geometry, analyze_geometry(mesh, bounds));
+
+        changed.assign(mesh.pos.size(), 0);
+        geometry.features = features.as_features(mesh);
+        flips += flipping_pass(mesh, geometry, FlipSettings{bounds, 20 * pi / 180}, &changed);
+        update_geometry(mesh, changed, bounds, geometry);
+        assert_same_geometry(geometry, analyze_geometry(mesh, bounds));
+    }
+    print_message("%d splits, %d contractions, %d flips\n", splits, contractions, flips);
+    assert_true(splits > 100 && contractions > 100 && flips > 100);
+    mesh_free(&shape);
+}
+
+} // namespace
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(each_pass_leaves_the_analysis_a_full_one_would_give),
+    };
+    return cmocka_run_group_tests(tests, nullptr, nullptr);
+}
