@@ -25,14 +25,18 @@ Vec3 tangent_target(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_
     Eigen::Matrix2d sum_metric = Eigen::Matrix2d::Zero();
     Eigen::Vector2d sum_image = Eigen::Vector2d::Zero();
     int count = 0;
+    // Between two isotropic vertices (most of a smooth surface) the metric is exactly the
+    // identity, and so are its roots: no square roots there.
+    const auto root = [](const Eigen::Matrix2d &m) { return m.isIdentity(0) ? m : tensor_sqrt(m); };
+    const auto inverse_root = [](const Eigen::Matrix2d &m) { return m.isIdentity(0) ? m : tensor_inverse_sqrt(m); };
     mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
         const Eigen::Matrix2d half = 0.5 * (own + tensor_in_frame(analysis.metric[w], mp));
         sum_metric += half;
         const Vec3 to_midpoint = 0.5 * (mesh.pos[w] - mesh.pos[v]);
-        sum_image += tensor_sqrt(half) * Eigen::Vector2d(mp.major.dot(to_midpoint), mp.minor.dot(to_midpoint));
+        sum_image += root(half) * Eigen::Vector2d(mp.major.dot(to_midpoint), mp.minor.dot(to_midpoint));
         ++count;
     });
-    const Eigen::Vector2d t = tensor_inverse_sqrt(sum_metric / count) * (sum_image / count);
+    const Eigen::Vector2d t = inverse_root(sum_metric / count) * (sum_image / count);
     return t.x() * mp.major + t.y() * mp.minor;
 }
 

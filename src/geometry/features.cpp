@@ -50,13 +50,17 @@ std::vector<int8_t> promoted_by_edges(const TriMesh &mesh, std::vector<int8_t> c
     // Every edge is looked at: compare cosines (no arc tangent). The angle between u and w
     // reaches the ridge angle where u.w <= cos(ridge angle) |u| |w|.
     const double cos_ridge = std::cos(thresholds.ridge_angle);
+    std::vector<double> length(area_vectors.size()); // each face's once, not at every edge end
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t t = 0; t < static_cast<int32_t>(area_vectors.size()); ++t)
+        length[t] = area_vectors[t].norm();
     const auto sharp = [&](int32_t h) {
         h = canonical_halfedge(mesh, h);
         const int32_t g = mesh.opp[h];
         if (g < 0)
             return true;
-        const Vec3 &u = area_vectors[TriMesh::face(h)], &w = area_vectors[TriMesh::face(g)];
-        return u.dot(w) <= cos_ridge * u.norm() * w.norm();
+        const int32_t f = TriMesh::face(h), e = TriMesh::face(g);
+        return area_vectors[f].dot(area_vectors[e]) <= cos_ridge * length[f] * length[e];
     };
     // Gathered per vertex (each edge is looked at from both ends), so that the loop runs in
     // parallel without shared counters.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace sfa {
 
@@ -101,13 +102,18 @@ double max_aspect_ratio(const TriMesh &mesh)
 
 double max_normal_turn_degrees(const TriMesh &mesh)
 {
-    const auto normal = [&](int32_t t) {
+    // Each face's normal and its length once, then one dot product per edge: the edge with
+    // the smallest cosine (ties: the lowest half-edge, so the same for any number of
+    // threads), without an arc tangent per edge; then its angle, accurately. A flat
+    // triangle has no normal and turns nothing.
+    std::vector<Vec3> normal(mesh.tri.size());
+    std::vector<double> length(mesh.tri.size());
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t t = 0; t < mesh.num_triangles(); ++t) {
         const Triangle &c = mesh.tri[t];
-        return Vec3((mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]));
-    };
-    // The edge whose normals have the smallest cosine (ties: the lowest half-edge, so the
-    // same for any number of threads), found without an arc tangent per edge; then its
-    // angle, accurately. A flat triangle has no normal and turns nothing, as before.
+        normal[t] = (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]);
+        length[t] = normal[t].norm();
+    }
     double smallest_cos = 2;
     int32_t sharpest = -1;
 #pragma omp parallel num_threads(loop_threads())
@@ -119,9 +125,9 @@ double max_normal_turn_degrees(const TriMesh &mesh)
             const int32_t twin = mesh.opp[h];
             if (twin < h)
                 continue; // boundary, or seen from the other side
-            const Vec3 a = normal(TriMesh::face(h)), b = normal(TriMesh::face(twin));
-            const double lengths = a.norm() * b.norm();
-            const double cosine = lengths > 0 ? a.dot(b) / lengths : 1.0;
+            const int32_t f = TriMesh::face(h), g = TriMesh::face(twin);
+            const double lengths = length[f] * length[g];
+            const double cosine = lengths > 0 ? normal[f].dot(normal[g]) / lengths : 1.0;
             if (cosine < local_cos) {
                 local_cos = cosine;
                 local_edge = h;
@@ -135,7 +141,7 @@ double max_normal_turn_degrees(const TriMesh &mesh)
     }
     if (sharpest < 0)
         return 0; // no interior edge
-    return angle_between(normal(TriMesh::face(sharpest)), normal(TriMesh::face(mesh.opp[sharpest]))) *
+    return angle_between(normal[TriMesh::face(sharpest)], normal[TriMesh::face(mesh.opp[sharpest])]) *
            degrees_per_radian;
 }
 

@@ -39,8 +39,7 @@ std::vector<uint64_t> morton_keys(const std::vector<Vec3> &pos)
 }
 
 // The order of 0..n-1 by key, ties by index.
-template <class Key>
-std::vector<int32_t> sorted_by(const std::vector<Key> &key)
+std::vector<int32_t> sorted_by(const std::vector<uint64_t> &key)
 {
     std::vector<int32_t> order(key.size());
     std::iota(order.begin(), order.end(), 0);
@@ -61,12 +60,18 @@ std::vector<int32_t> inverse(const std::vector<int32_t> &order)
 std::vector<int32_t> order_for_locality(TriMesh &mesh)
 {
     const std::vector<int32_t> vertex_map = inverse(sorted_by(morton_keys(mesh.pos)));
-    std::vector<int32_t> first_vertex(mesh.tri.size());
+    // Triangles by their smallest new vertex, ties by old number: a counting sort.
+    std::vector<int32_t> first_vertex(mesh.tri.size()), start(mesh.pos.size() + 1, 0);
     for (size_t t = 0; t < mesh.tri.size(); ++t) {
         const Triangle &c = mesh.tri[t];
         first_vertex[t] = std::min({vertex_map[c[0]], vertex_map[c[1]], vertex_map[c[2]]});
+        ++start[first_vertex[t] + 1];
     }
-    const std::vector<int32_t> triangle_order = sorted_by(first_vertex);
+    for (size_t v = 0; v < mesh.pos.size(); ++v)
+        start[v + 1] += start[v];
+    std::vector<int32_t> triangle_order(mesh.tri.size());
+    for (int32_t t = 0; t < mesh.num_triangles(); ++t)
+        triangle_order[start[first_vertex[t]]++] = t;
     const std::vector<int32_t> triangle_map = inverse(triangle_order);
     const auto new_halfedge = [&](int32_t h) { return h < 0 ? -1 : 3 * triangle_map[h / 3] + h % 3; };
 
