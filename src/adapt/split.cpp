@@ -98,9 +98,15 @@ int32_t splitting_pass(TriMesh &mesh, const RepairSettings &settings, CarriedFea
     const int32_t halfedges = 3 * mesh.num_triangles();
     std::vector<char> wanted(halfedges, 0);
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t h = 0; h < halfedges; ++h)
-        if (mesh.opp[h] < 0 || mesh.opp[h] > h) // each edge once
+    for (int32_t h = 0; h < halfedges; ++h) {
+        if (mesh.opp[h] >= 0 && mesh.opp[h] < h)
+            continue; // each edge once
+        // Both criteria need the edge longer than l or L: most edges are not, and their
+        // neighbourhood need not be looked at.
+        const double length = (mesh.pos[mesh.head(h)] - mesh.pos[mesh.tail(h)]).norm();
+        if (length > settings.desired_length || length > settings.split_length)
             wanted[h] = wants_split(edge_neighbourhood(mesh, h), settings);
+    }
     std::vector<Candidate> candidates;
     for (int32_t h = 0; h < halfedges; ++h)
         if (wanted[h])

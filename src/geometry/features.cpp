@@ -120,7 +120,8 @@ std::vector<char> pruned_edges(const TriMesh &mesh, const std::vector<int8_t> &c
         crowded[v] = candidate[v] != 2 && edges > 2;
     }
     std::vector<char> keep(strength.size(), 0);
-    for (size_t h = 0; h < strength.size(); ++h)
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t h = 0; h < static_cast<int32_t>(strength.size()); ++h)
         keep[h] = strength[h] > 0;
     std::vector<int32_t> edges;
     for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
