@@ -74,6 +74,10 @@ Verdict judge(const TriMesh &mesh, int32_t h, const std::vector<Mat3> &quadric, 
     // orientation (near a ridge the summed frame can be steep to the quad).
     if (cross2(mb - ma, mp - ma) <= 0 || cross2(ma - mb, mq - mb) <= 0)
         return keep;
+    // Two acute opposite angles sum to less than pi: most edges are settled without an arc
+    // tangent.
+    if ((ma - mp).dot(mb - mp) > 0 && (mb - mq).dot(ma - mq) > 0)
+        return keep;
     const double angle_p = angle_at(mp, ma, mb), angle_q = angle_at(mq, mb, ma);
     return {angle_p + angle_q > pi + delaunay_slack, std::max(angle_p, angle_q)};
 }
