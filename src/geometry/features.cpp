@@ -45,15 +45,12 @@ int32_t canonical_halfedge(const TriMesh &mesh, int32_t h)
 // a sharp edge. So the edges vote too: a vertex on two edges whose dihedral angle reaches
 // the ridge angle is a ridge candidate, on three or more a corner candidate (curves meet).
 std::vector<int8_t> promoted_by_edges(const TriMesh &mesh, std::vector<int8_t> candidate,
-                                      const std::vector<Vec3> &area_vectors, const FeatureThresholds &thresholds)
+                                      const std::vector<Vec3> &area_vectors, const std::vector<double> &length,
+                                      const FeatureThresholds &thresholds)
 {
     // Every edge is looked at: compare cosines (no arc tangent). The angle between u and w
     // reaches the ridge angle where u.w <= cos(ridge angle) |u| |w|.
     const double cos_ridge = std::cos(thresholds.ridge_angle);
-    std::vector<double> length(area_vectors.size()); // each face's once, not at every edge end
-#pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t t = 0; t < static_cast<int32_t>(area_vectors.size()); ++t)
-        length[t] = area_vectors[t].norm();
     const auto sharp = [&](int32_t h) {
         h = canonical_halfedge(mesh, h);
         const int32_t g = mesh.opp[h];
@@ -79,7 +76,8 @@ constexpr double boundary_strength = 4;
 // Stage 2: candidate ridge edges, with a strength (dihedral angle between the two faces'
 // normals, or boundary_strength), indexed by half-edge; 0 where an edge is no candidate.
 std::vector<double> candidate_edges(const TriMesh &mesh, const std::vector<int8_t> &candidate,
-                                    const std::vector<Vec3> &area_vectors, const FeatureThresholds &thresholds)
+                                    const std::vector<Vec3> &area_vectors, const std::vector<double> &length,
+                                    const FeatureThresholds &thresholds)
 {
     // The arc tangent only where the cosine leaves doubt: an angle whose cosine exceeds
     // cos(ridge angle) by more than round-off is certainly below it.
@@ -94,8 +92,9 @@ std::vector<double> candidate_edges(const TriMesh &mesh, const std::vector<int8_
         }
         if (candidate[mesh.tail(c)] == 0 || candidate[mesh.head(c)] == 0)
             continue;
-        const Vec3 &u = area_vectors[TriMesh::face(c)], &w = area_vectors[TriMesh::face(g)];
-        if (u.dot(w) > cos_below * u.norm() * w.norm())
+        const int32_t f = TriMesh::face(c), e = TriMesh::face(g);
+        const Vec3 &u = area_vectors[f], &w = area_vectors[e];
+        if (u.dot(w) > cos_below * length[f] * length[e])
             continue;
         const double dihedral = angle_between(u, w);
         if (dihedral >= thresholds.ridge_angle)
@@ -155,10 +154,15 @@ std::vector<char> pruned_edges(const TriMesh &mesh, const std::vector<int8_t> &c
 Features detect_features(const TriMesh &mesh, const std::vector<QuadricEigen> &eigen,
                          const std::vector<Vec3> &area_vectors, const FeatureThresholds &thresholds)
 {
+    // Each face's area once, for both edge stages (not at every edge end).
+    std::vector<double> length(area_vectors.size());
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t t = 0; t < static_cast<int32_t>(area_vectors.size()); ++t)
+        length[t] = area_vectors[t].norm();
     const std::vector<int8_t> candidate = promoted_by_edges(mesh, candidate_ranks(mesh, eigen, thresholds),
-                                                            area_vectors, thresholds);
+                                                            area_vectors, length, thresholds);
     const double chi_c = ratio_of_angle(thresholds.ridge_angle);
-    const std::vector<double> strength = candidate_edges(mesh, candidate, area_vectors, thresholds);
+    const std::vector<double> strength = candidate_edges(mesh, candidate, area_vectors, length, thresholds);
 
     Features features;
     features.ridge_halfedge = pruned_edges(mesh, candidate, strength);
