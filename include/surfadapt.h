@@ -391,7 +391,10 @@ int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t, double dt
  * the anisotropic metric and is lifted onto a quadratic surface fitted to its neighbours;
  * every ridge or boundary vertex moves along the circle through itself and its two ridge
  * neighbours (the line, where they are collinear); corners do not move. A vertex whose
- * move would fold a triangle stays put for that sweep. After each sweep a closed surface
+ * move would fold a triangle stays put for that sweep, and so do the corners of a triangle
+ * that would pass through another part of the surface (where a sheet is thinner than an
+ * edge, its other side is that near; such places are found by the last sfa_adapt(), or by
+ * this call if the mesh was set since). After each sweep a closed surface
  * gets its enclosed volume back by a common offset of its smooth vertices along their
  * normals (a correction in the primary space), so smoothing alone never changes the volume.
  * Fields are interpolated at the new positions. Connectivity and vertex order do not
@@ -412,7 +415,11 @@ int sfa_smooth(sfa_surface *s, int32_t iterations);
  * sfa_smooth()), each after a fresh analysis. Every
  * threshold is a parameter (§4.3). A closed surface ends with the enclosed volume it
  * started with (to round-off). Corners never move; ridge vertices stay on their ridge
- * curves; boundaries stay boundaries.
+ * curves; boundaries stay boundaries. Splits, contractions, flips and sweeps are kept
+ * from passing the surface through itself: where a sheet is thinner than an edge (the
+ * filaments of a strong vortex), an operation that would carry a triangle through a
+ * triangle of the other side is not made. (Motion can still bring two sheets nearer than the mesh resolves:
+ * sfa_measure() ::SFA_MEASURE_SELF_INTERSECTIONS counts the crossings.)
  *
  * Vertex and triangle counts change and vertices are renumbered: read the mesh back with
  * sfa_get_counts() and sfa_get_mesh(). A call that splits or contracts edges returns the

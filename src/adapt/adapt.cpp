@@ -15,7 +15,8 @@ namespace {
 constexpr double settled_fraction = 1e-2;
 } // namespace
 
-AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings)
+AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
+                          std::vector<char> &near_sheet)
 {
     AdaptCounts counts;
     PhaseTimes &seconds = counts.seconds;
@@ -38,6 +39,8 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
         geometry.features = features.as_features(mesh);
         changed.assign(mesh.pos.size(), 0);
     };
+    // Where the surface is thinner than an edge, no step may carry it through itself.
+    CrossingGuard guard = timed(seconds.analysis, [&] { return CrossingGuard(near_facing_sheet(mesh)); });
     const bool closed = mesh.is_closed();
     const double volume = enclosed_volume(mesh);
     while (counts.passes < settings.max_passes) {
@@ -46,22 +49,24 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
         changed.assign(mesh.pos.size(), 0);
         // Repair first (§4): the density the desired edge length asks for, and no extreme
         // angles; then optimization (§3) of the repaired mesh.
-        const int32_t splits =
-            timed(seconds.repair, [&] { return splitting_pass(mesh, settings.repair, features, fields, changed); });
+        const int32_t splits = timed(seconds.repair, [&] {
+            return splitting_pass(mesh, settings.repair, features, fields, changed, &guard);
+        });
         analyse_changed();
         const int32_t contractions = timed(seconds.repair, [&] {
-            return contraction_pass(mesh, geometry, settings.repair, features, fields, changed);
+            return contraction_pass(mesh, geometry, settings.repair, features, fields, changed, &guard);
         });
         analyse_changed();
         const int32_t flips = timed(seconds.flipping, [&] {
-            return flipping_pass(mesh, geometry, FlipSettings{settings.metric, settings.flip_max_dihedral}, &changed);
+            const FlipSettings flip_settings{settings.metric, settings.flip_max_dihedral};
+            return flipping_pass(mesh, geometry, flip_settings, &changed, &guard);
         });
         analyse_changed();
         for (int sweep = 0; sweep < settings.smoothing_sweeps; ++sweep) {
             if (sweep > 0)
                 analyse_all();
             PhaseClock clock(seconds.smoothing);
-            std::vector<Vec3> moved = smoothing_sweep(mesh, geometry, settings.denoise);
+            std::vector<Vec3> moved = smoothing_sweep(mesh, geometry, settings.denoise, &guard);
             fields = fields_at_moved_vertices(mesh, moved, fields);
             mesh.pos.swap(moved);
         }
@@ -84,8 +89,11 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
     // to each other in memory again, for every loop until the next adaptation.
     if (counts.splits + counts.contractions > 0) {
         PhaseClock clock(seconds.repair);
-        renumber_fields(fields, order_for_locality(mesh));
+        const std::vector<int32_t> vertex_map = order_for_locality(mesh);
+        renumber_fields(fields, vertex_map);
+        guard.renumber(vertex_map);
     }
+    near_sheet = guard.watched();
     return counts;
 }
 

@@ -33,6 +33,10 @@ struct AdaptCounts {
 // (restore_enclosed_volume), and if edges were split or contracted, the mesh is renumbered
 // for locality (locality_order.hpp). The fields (one value set per vertex) follow every
 // step. The mesh stays dense and valid. The seconds of each phase are counted in the result.
-AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings);
+// No step carries the surface through itself where it is thinner than an edge
+// (crossing_guard.hpp): the vertices near a facing sheet are found at the start and carried
+// through the call; on return `near_sheet` holds them, numbered as the returned mesh.
+AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
+                          std::vector<char> &near_sheet);
 
 } // namespace sfa

@@ -2,6 +2,7 @@
 
 #include "fields/transfer.hpp"
 #include "geometry/circle.hpp"
+#include "geometry/crossing_guard.hpp"
 #include "geometry/edge_neighbourhood.hpp"
 #include "geometry/quadric_error.hpp"
 #include "geometry/self_intersection.hpp"
@@ -131,6 +132,28 @@ bool stays_clear_of_neighbours(const TriMesh &mesh, int32_t h, const Vec3 &merge
     return clear;
 }
 
+// True if a surviving face around the merged vertex would pass through a watched face:
+// the check of stays_clear_of_neighbours, for the faces beyond the ends' neighbours.
+bool merge_crosses(const TriMesh &mesh, int32_t h, const Vec3 &merged, const CrossingGuard &guard)
+{
+    const int32_t a = mesh.tail(h), b = mesh.head(h);
+    bool crosses = false;
+    for_each_face_around(mesh, h, [&](int32_t f) {
+        Triangle t = mesh.tri[f];
+        const bool has_a = t[0] == a || t[1] == a || t[2] == a, has_b = t[0] == b || t[1] == b || t[2] == b;
+        if (crosses || (has_a && has_b) || !guard.watches_any(t))
+            return; // done, dies with the edge, or nothing near
+        Vec3 at[3];
+        for (int k = 0; k < 3; ++k) {
+            at[k] = t[k] == a || t[k] == b ? merged : mesh.pos[t[k]];
+            if (t[k] == a)
+                t[k] = b; // the merged vertex keeps b's number
+        }
+        crosses = guard.crosses(mesh, mesh.pos, t, at, a);
+    });
+    return crosses;
+}
+
 // Where the merged vertex goes (§4.2), or false if the contraction would spoil a feature.
 bool merged_position(const TriMesh &mesh, int32_t h, const CarriedFeatures &features, Vec3 &merged, int8_t &merged_rank)
 {
@@ -169,7 +192,8 @@ struct Candidate {
 } // namespace
 
 int32_t contraction_pass(TriMesh &mesh, SurfaceAnalysis &analysis, const RepairSettings &settings,
-                         CarriedFeatures &features, std::vector<VertexField> &fields, std::vector<char> &changed)
+                         CarriedFeatures &features, std::vector<VertexField> &fields, std::vector<char> &changed,
+                         CrossingGuard *guard)
 {
     RidgeSet &ridges = features.ridges;
     // Judging is independent per edge (in parallel); collecting is in half-edge order.
@@ -188,6 +212,8 @@ int32_t contraction_pass(TriMesh &mesh, SurfaceAnalysis &analysis, const RepairS
         return std::tie(x.length, x.a, x.b) < std::tie(y.length, y.a, y.b);
     });
 
+    if (guard)
+        guard->index_faces(mesh, mesh.pos);
     int32_t contractions = 0;
     std::vector<int32_t> ridge_neighbours;
     for (const Candidate &c : candidates) {
@@ -200,7 +226,7 @@ int32_t contraction_pass(TriMesh &mesh, SurfaceAnalysis &analysis, const RepairS
         int8_t merged_rank;
         if (h < 0 || !wants_contraction(mesh, analysis, h, settings) || !collapse_keeps_manifold(mesh, h) ||
             !merged_position(mesh, h, features, merged, merged_rank) || !faces_survive(mesh, h, merged) ||
-            !stays_clear_of_neighbours(mesh, h, merged))
+            !stays_clear_of_neighbours(mesh, h, merged) || (guard && merge_crosses(mesh, h, merged, *guard)))
             continue;
         const Stencil stencil = stencil_over(mesh, merged, [&](auto &&visit) { for_each_face_around(mesh, h, visit); });
         const int32_t gone = mesh.tail(h), keep = mesh.head(h);
@@ -213,6 +239,8 @@ int32_t contraction_pass(TriMesh &mesh, SurfaceAnalysis &analysis, const RepairS
         // The merged vertex moved: every fan it is in changed.
         changed[keep] = 1;
         mesh.for_each_neighbour(keep, [&](int32_t w, int32_t) { changed[w] = 1; });
+        if (guard)
+            mesh.for_each_outgoing(keep, [&](int32_t g) { guard->refresh(mesh, mesh.pos, TriMesh::face(g)); });
         set_interpolated(fields, keep, stencil);
         features.rank[keep] = merged_rank;
         ridges.remove(gone, keep);
@@ -226,6 +254,8 @@ int32_t contraction_pass(TriMesh &mesh, SurfaceAnalysis &analysis, const RepairS
     renumber_fields(fields, vertex_map);
     features.renumber(vertex_map);
     renumber_vertices(analysis, vertex_map);
+    if (guard)
+        guard->renumber(vertex_map);
     for (size_t v = 0; v < vertex_map.size(); ++v)
         if (vertex_map[v] >= 0) // new numbers never exceed old ones: in place, in order
             changed[vertex_map[v]] = changed[v];

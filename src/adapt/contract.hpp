@@ -5,6 +5,7 @@
 #include "adapt/repair_settings.hpp"
 #include "fields/vertex_fields.hpp"
 #include "geometry/analysis.hpp"
+#include "geometry/crossing_guard.hpp"
 
 #include <vector>
 
@@ -22,8 +23,10 @@ namespace sfa {
 // and features are dense again). `analysis` gives the metric of the mesh as it was, and is
 // renumbered with the mesh; `changed` (one mark per vertex) too, after every vertex whose
 // fan a contraction changed was marked in it (update_geometry).
-// Returns the number of contractions.
+// With a guard, a contraction whose faces would pass through a watched face is refused,
+// and the guard is renumbered with the mesh. Returns the number of contractions.
 int32_t contraction_pass(TriMesh &mesh, SurfaceAnalysis &analysis, const RepairSettings &settings,
-                         CarriedFeatures &features, std::vector<VertexField> &fields, std::vector<char> &changed);
+                         CarriedFeatures &features, std::vector<VertexField> &fields, std::vector<char> &changed,
+                         CrossingGuard *guard = nullptr);
 
 } // namespace sfa

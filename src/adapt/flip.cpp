@@ -94,6 +94,18 @@ void update_quadrics(std::vector<Mat3> &quadric, const TriMesh &mesh, int32_t t0
     }
 }
 
+// True if either new face of the flip, (q, p, a) or (p, q, b), would pass through a
+// watched face.
+bool flip_crosses(const TriMesh &mesh, const FlipQuad &quad, const CrossingGuard &guard)
+{
+    for (const Triangle &t : {Triangle{quad.q, quad.p, quad.a}, Triangle{quad.p, quad.q, quad.b}}) {
+        const Vec3 at[3] = {mesh.pos[t[0]], mesh.pos[t[1]], mesh.pos[t[2]]};
+        if (guard.watches_any(t) && guard.crosses(mesh, mesh.pos, t, at))
+            return true;
+    }
+    return false;
+}
+
 struct Candidate {
     double max_opposite_angle;
     int32_t a, b;
@@ -102,7 +114,7 @@ struct Candidate {
 } // namespace
 
 int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const FlipSettings &settings,
-                      std::vector<char> *changed)
+                      std::vector<char> *changed, CrossingGuard *guard)
 {
     const double cos_max_dihedral = std::cos(settings.max_dihedral);
     std::vector<Mat3> quadric = analysis.quadric;
@@ -131,21 +143,28 @@ int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const Flip
         return std::tie(y.max_opposite_angle, x.a, x.b) < std::tie(x.max_opposite_angle, y.a, y.b);
     });
 
+    if (guard)
+        guard->index_faces(mesh, mesh.pos);
     int32_t flips = 0;
     for (const Candidate &candidate : candidates) {
         // Earlier flips may have removed this edge or changed its quad: judge it again.
         const int32_t h = mesh.halfedge(candidate.a, candidate.b);
         if (h < 0 || !may_flip(h) || !judge(mesh, h, quadric, settings, cos_max_dihedral).flip)
             continue;
+        const FlipQuad quad = flip_quad(mesh, h);
+        if (guard && flip_crosses(mesh, quad, *guard))
+            continue;
         const int32_t t0 = TriMesh::face(h), t1 = TriMesh::face(mesh.opp[h]);
-        if (changed) {
-            const FlipQuad quad = flip_quad(mesh, h);
+        if (changed)
             for (int32_t v : {quad.a, quad.b, quad.p, quad.q})
                 (*changed)[v] = 1;
-        }
         update_quadrics(quadric, mesh, t0, t1, -1);
         const FlipMoves moves = flip_edge(mesh, h);
         update_quadrics(quadric, mesh, t0, t1, +1);
+        if (guard) {
+            guard->refresh(mesh, mesh.pos, t0);
+            guard->refresh(mesh, mesh.pos, t1);
+        }
         char moved[4];
         for (int k = 0; k < 4; ++k)
             moved[k] = locked[moves.from[k]];

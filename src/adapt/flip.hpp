@@ -2,6 +2,7 @@
 #pragma once
 
 #include "geometry/analysis.hpp"
+#include "geometry/crossing_guard.hpp"
 
 namespace sfa {
 
@@ -17,8 +18,9 @@ struct FlipSettings {
 // new pair of triangles within max_dihedral of flat). Vertex positions never change.
 // `analysis` needs the quadrics and the features only. Returns the number of flips.
 // The four vertices of every flipped quad are marked in `changed`, if given (one mark per
-// vertex; update_geometry).
+// vertex; update_geometry). With a guard, a flip whose new faces would pass through a
+// watched face is not made.
 int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const FlipSettings &settings,
-                      std::vector<char> *changed = nullptr);
+                      std::vector<char> *changed = nullptr, CrossingGuard *guard = nullptr);
 
 } // namespace sfa

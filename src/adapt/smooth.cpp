@@ -1,6 +1,7 @@
 #include "adapt/smooth.hpp"
 
 #include "geometry/circle.hpp"
+#include "geometry/crossing_guard.hpp"
 #include "geometry/local_fit.hpp"
 #include "mesh/parallel.hpp"
 #include "motion/fold_time.hpp"
@@ -106,7 +107,8 @@ Vec3 denoising_motion(const TriMesh &mesh, const std::vector<Vec3> &umbrella, co
 
 } // namespace
 
-std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &analysis, double denoise)
+std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &analysis, double denoise,
+                                  CrossingGuard *guard)
 {
     const int32_t n = mesh.num_vertices();
     std::vector<Vec3> motion(n, Vec3::Zero());
@@ -126,19 +128,43 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
         }
     }
 
-    // Jacobi moves can still fold a triangle where neighbours move towards each other:
-    // the vertices of such a triangle stay where they were in this sweep. Each round stops
-    // at least one more vertex, so this ends.
+    // Jacobi moves can still fold a triangle where neighbours move towards each other, or
+    // carry a face through the other side of a sheet thinner than an edge: the vertices of
+    // such a face stay where they were in this sweep. Each round stops at least one more
+    // vertex, so this ends.
     std::vector<Vec3> moved(n);
+    const auto moves = [&](const Triangle &t) {
+        return motion[t[0]] != Vec3::Zero() || motion[t[1]] != Vec3::Zero() || motion[t[2]] != Vec3::Zero();
+    };
     for (;;) {
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
         for (int32_t v = 0; v < n; ++v)
             moved[v] = mesh.pos[v] + motion[v];
         const int32_t folded = first_folded_triangle(mesh, moved);
-        if (folded < 0)
+        if (folded >= 0) {
+            for (int32_t v : mesh.tri[folded])
+                motion[v] = Vec3::Zero();
+            continue;
+        }
+        if (!guard)
             return moved;
-        for (int32_t v : mesh.tri[folded])
-            motion[v] = Vec3::Zero();
+        const std::vector<int32_t> &watched = guard->index_faces(mesh, moved);
+        std::vector<char> crossing(watched.size(), 0);
+#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 256)
+        for (size_t i = 0; i < watched.size(); ++i) {
+            const Triangle &t = mesh.tri[watched[i]];
+            const Vec3 at[3] = {moved[t[0]], moved[t[1]], moved[t[2]]};
+            crossing[i] = moves(t) && guard->crosses(mesh, moved, t, at);
+        }
+        bool stopped = false;
+        for (size_t i = 0; i < watched.size(); ++i)
+            if (crossing[i]) {
+                for (int32_t v : mesh.tri[watched[i]])
+                    motion[v] = Vec3::Zero();
+                stopped = true;
+            }
+        if (!stopped)
+            return moved;
     }
 }
 

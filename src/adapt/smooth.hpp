@@ -2,6 +2,7 @@
 #pragma once
 
 #include "geometry/analysis.hpp"
+#include "geometry/crossing_guard.hpp"
 
 #include <vector>
 
@@ -23,6 +24,10 @@ namespace sfa {
 // (the plain umbrella step would shrink every curved region, and volume restoration would
 // then round the body off). The caller's volume restoration gives back the volume the
 // noise took with it.
-std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &analysis, double denoise = 0);
+//
+// With a guard, a move that would carry a face through a watched face is not made (the
+// face's corners stay), nor one that folds a face.
+std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &analysis, double denoise = 0,
+                                  CrossingGuard *guard = nullptr);
 
 } // namespace sfa

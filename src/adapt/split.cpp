@@ -2,6 +2,7 @@
 
 #include "fields/transfer.hpp"
 #include "geometry/circle.hpp"
+#include "geometry/crossing_guard.hpp"
 #include "geometry/edge_neighbourhood.hpp"
 #include "geometry/quadric_error.hpp"
 #include "mesh/edge_split.hpp"
@@ -84,6 +85,30 @@ Vec3 new_vertex_position(const TriMesh &mesh, int32_t h, bool on_ridge, const Ca
     return halves_keep_orientation(mesh, h, placed) ? placed : centre;
 }
 
+// True if a half of the edge's faces, with the new vertex at `position`, would pass
+// through a watched face.
+bool split_crosses(const TriMesh &mesh, int32_t h, const Vec3 &position, const CrossingGuard &guard)
+{
+    bool crosses = false;
+    for_each_edge_face(mesh, h, [&](int32_t f) {
+        const Triangle &t = mesh.tri[f];
+        if (crosses || !guard.watches_any(t))
+            return;
+        // The edge's ends are two of the corners; the new vertex replaces each in turn (and
+        // is none of the faces' vertices, -1 here).
+        for (int k = 0; k < 3; ++k) {
+            if (t[k] != mesh.tail(h) && t[k] != mesh.head(h))
+                continue;
+            Triangle half = t;
+            half[k] = -1;
+            Vec3 at[3] = {mesh.pos[t[0]], mesh.pos[t[1]], mesh.pos[t[2]]};
+            at[k] = position;
+            crosses = crosses || guard.crosses(mesh, mesh.pos, half, at);
+        }
+    });
+    return crosses;
+}
+
 struct Candidate {
     double length;
     int32_t a, b;
@@ -92,7 +117,7 @@ struct Candidate {
 } // namespace
 
 int32_t splitting_pass(TriMesh &mesh, const RepairSettings &settings, CarriedFeatures &features,
-                       std::vector<VertexField> &fields, std::vector<char> &changed)
+                       std::vector<VertexField> &fields, std::vector<char> &changed, CrossingGuard *guard)
 {
     // Judging is independent per edge (in parallel); collecting is in half-edge order.
     const int32_t halfedges = 3 * mesh.num_triangles();
@@ -117,6 +142,8 @@ int32_t splitting_pass(TriMesh &mesh, const RepairSettings &settings, CarriedFea
         return std::tie(y.length, x.a, x.b) < std::tie(x.length, y.a, y.b);
     });
 
+    if (guard)
+        guard->index_faces(mesh, mesh.pos);
     int32_t splits = 0;
     for (const Candidate &c : candidates) {
         int32_t h = mesh.halfedge(c.a, c.b);
@@ -126,6 +153,8 @@ int32_t splitting_pass(TriMesh &mesh, const RepairSettings &settings, CarriedFea
             continue;
         const bool on_ridge = features.ridges.contains(c.a, c.b) || mesh.opp[h] < 0;
         const Vec3 position = new_vertex_position(mesh, h, on_ridge, features);
+        if (guard && split_crosses(mesh, h, position, *guard))
+            continue;
         const Stencil stencil = stencil_over(mesh, position, [&](auto &&visit) { for_each_edge_face(mesh, h, visit); });
         for_each_edge_face(mesh, h, [&](int32_t f) {
             for (int32_t v : mesh.tri[f])
@@ -133,6 +162,10 @@ int32_t splitting_pass(TriMesh &mesh, const RepairSettings &settings, CarriedFea
         });
         const int32_t m = split_edge(mesh, h, position);
         changed.push_back(1);
+        if (guard) {
+            guard->add_vertex(guard->watches(c.a) || guard->watches(c.b));
+            mesh.for_each_outgoing(m, [&](int32_t g) { guard->refresh(mesh, mesh.pos, TriMesh::face(g)); });
+        }
         append_interpolated(fields, stencil);
         features.rank.push_back(on_ridge ? 1 : 0);
         if (on_ridge) {

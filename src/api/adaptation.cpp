@@ -36,10 +36,15 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
         try {
             const double volume = enclosed_volume(mesh);
             const bool closed = mesh.is_closed();
+            // The last adaptation's findings where there was one (a flow adapts every few
+            // steps, and a sheet thins slowly), else this surface's own.
+            CrossingGuard guard = timed(seconds.analysis, [&] {
+                return CrossingGuard(s->near_sheet.size() == mesh.pos.size() ? s->near_sheet : near_facing_sheet(mesh));
+            });
             for (int32_t sweep = 0; sweep < iterations; ++sweep) {
                 const SurfaceAnalysis analysis = timed(seconds.analysis, [&] { return current_analysis(s, mesh); });
                 PhaseClock clock(seconds.smoothing);
-                std::vector<Vec3> moved = smoothing_sweep(mesh, analysis, s->params.get(Param::denoise));
+                std::vector<Vec3> moved = smoothing_sweep(mesh, analysis, s->params.get(Param::denoise), &guard);
                 fields = fields_at_moved_vertices(mesh, moved, fields);
                 mesh.pos.swap(moved);
                 if (closed)
@@ -76,7 +81,8 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
                     velocity.values[3 * v + c] = s->velocity[v][c];
             data.push_back(std::move(velocity));
         }
-        const AdaptCounts counts = adapt_surface(mesh, data, settings);
+        std::vector<char> near_sheet;
+        const AdaptCounts counts = adapt_surface(mesh, data, settings, near_sheet);
         const std::string broken = invariant_violation(mesh);
         if (!broken.empty())
             fail(Status::internal, ("the adapted mesh is broken (" + broken + "); the surface is unchanged").c_str());
@@ -91,6 +97,7 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
         s->mesh = std::move(mesh);
         s->fields.swap(data);
         s->velocity.swap(velocity);
+        s->near_sheet.swap(near_sheet);
         s->seconds_spent += counts.seconds;
     });
 }

@@ -31,6 +31,7 @@ SFA_EXPORT int sfa_set_mesh(sfa_surface *s, int32_t nverts, const double *xyz, i
         s->mean_edge_length_at_set = mean_edge_length;
         s->velocity.clear();
         s->fields.clear();
+        s->near_sheet.clear();
     });
 }
 

@@ -20,6 +20,10 @@ struct sfa_surface {
     std::vector<sfa::Vec3> velocity; // empty until sfa_set_velocities
     std::vector<sfa::VertexField> fields;
     sfa::PhaseTimes seconds_spent; // by the successful sfa_smooth and sfa_adapt calls
+    // The vertices near a facing sheet (geometry/crossing_guard.hpp) as the last sfa_adapt
+    // found them, for the sfa_smooth calls until the next; empty if the connectivity
+    // changed since (sfa_set_mesh).
+    std::vector<char> near_sheet;
 
     // A fixed buffer, so that reporting an error (out of memory included) never allocates.
     mutable char last_error[1024] = "";

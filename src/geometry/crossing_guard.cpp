@@ -1,0 +1,268 @@
+#include "geometry/crossing_guard.hpp"
+
+#include "geometry/quadric.hpp"
+#include "geometry/self_intersection.hpp"
+#include "mesh/parallel.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sfa {
+namespace {
+
+// A cell (i, j, k) as one key, 21 bits per axis. Cells further apart than 2^21 share keys:
+// that only brings more candidates, each tested exactly.
+uint64_t cell_key(int64_t i, int64_t j, int64_t k)
+{
+    constexpr uint64_t mask = (uint64_t{1} << 21) - 1;
+    return (static_cast<uint64_t>(i) & mask) << 42 | (static_cast<uint64_t>(j) & mask) << 21 |
+           (static_cast<uint64_t>(k) & mask);
+}
+
+// A uniform grid of points: cells of a given size over the points' box (larger if that
+// would make more than 8 cells per point), and the points listed cell by cell (a counting
+// sort, no hashing).
+class PointGrid {
+public:
+    PointGrid(const std::vector<Vec3> &points, double cell) : origin_(points[0]), high_(points[0])
+    {
+        for (const Vec3 &p : points) {
+            origin_ = origin_.cwiseMin(p);
+            high_ = high_.cwiseMax(p);
+        }
+        const auto cells_for = [&](double size) {
+            const Eigen::Array3d count = ((high_ - origin_) / size).array().floor() + 1;
+            return count;
+        };
+        const double limit = 8.0 * static_cast<double>(points.size()) + 64;
+        if (cells_for(cell).prod() > limit) // a thin surface in a large box
+            cell *= std::cbrt(cells_for(cell).prod() / limit) * 1.01;
+        cell_ = cell;
+        const Eigen::Array3d count = cells_for(cell);
+        nx_ = static_cast<int64_t>(count[0]);
+        ny_ = static_cast<int64_t>(count[1]);
+        nz_ = static_cast<int64_t>(count[2]);
+        const int32_t n = static_cast<int32_t>(points.size());
+        std::vector<int64_t> cell_of_point(n);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+        for (int32_t v = 0; v < n; ++v) {
+            const Cell c = cell_of(points[v]);
+            cell_of_point[v] = (c[0] * ny_ + c[1]) * nz_ + c[2];
+        }
+        start_.assign(static_cast<size_t>(nx_ * ny_ * nz_) + 1, 0);
+        for (int64_t c : cell_of_point)
+            ++start_[c + 1];
+        for (size_t c = 1; c < start_.size(); ++c)
+            start_[c] += start_[c - 1];
+        point_.resize(n);
+        std::vector<int32_t> next(start_.begin(), start_.end() - 1);
+        for (int32_t v = 0; v < n; ++v)
+            point_[next[cell_of_point[v]]++] = v;
+    }
+
+    // The points in cell order: those of one cell are next to each other.
+    const std::vector<int32_t> &points() const { return point_; }
+
+    // Calls fn(k) for the position k in points() of every point in a cell that the box
+    // [lo, hi] meets.
+    template <class Fn>
+    void for_each_near(const Vec3 &lo, const Vec3 &hi, Fn &&fn) const
+    {
+        const Cell a = cell_of(lo), b = cell_of(hi);
+        for (int64_t i = a[0]; i <= b[0]; ++i)
+            for (int64_t j = a[1]; j <= b[1]; ++j) {
+                const int64_t column = (i * ny_ + j) * nz_;
+                for (int32_t k = start_[column + a[2]]; k < start_[column + b[2] + 1]; ++k)
+                    fn(k);
+            }
+    }
+
+private:
+    using Cell = std::array<int64_t, 3>;
+    // Clamped to the grid: a box reaching outside meets the border cells.
+    Cell cell_of(const Vec3 &p) const
+    {
+        const Eigen::Array3d c = ((p - origin_) / cell_).array().floor();
+        return {std::clamp<int64_t>(static_cast<int64_t>(c[0]), 0, nx_ - 1),
+                std::clamp<int64_t>(static_cast<int64_t>(c[1]), 0, ny_ - 1),
+                std::clamp<int64_t>(static_cast<int64_t>(c[2]), 0, nz_ - 1)};
+    }
+
+    Vec3 origin_, high_;
+    double cell_ = 1;
+    int64_t nx_ = 1, ny_ = 1, nz_ = 1;
+    std::vector<int32_t> start_; // cell c's points are point_[start_[c]] .. point_[start_[c + 1] - 1]
+    std::vector<int32_t> point_;
+};
+
+} // namespace
+
+std::vector<char> near_facing_sheet(const TriMesh &mesh)
+{
+    const int32_t n = mesh.num_vertices();
+    std::vector<Vec3> normal(n, Vec3::Zero());
+    std::vector<double> reach(n, 0); // the longest edge: how far the vertex's fan reaches
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t v = 0; v < n; ++v) {
+        mesh.for_each_outgoing(v, [&](int32_t h) {
+            normal[v] += face_area_vector(mesh, TriMesh::face(h));
+            reach[v] = std::max(reach[v], (mesh.pos[mesh.head(h)] - mesh.pos[v]).squaredNorm());
+        });
+        reach[v] = std::sqrt(reach[v]);
+    }
+    std::vector<char> marked(n, 0);
+    const double mean_reach = ordered_sum(n, 0.0, [&](int32_t v) { return reach[v]; }) / std::max(n, 1);
+    if (!(mean_reach > 0))
+        return marked;
+    // Cells of twice the mean reach, the distance most vertices search: a ball's box meets
+    // 4 to 9 columns of cells.
+    const PointGrid grid(mesh.pos, 2 * mean_reach);
+    // What the search reads of each vertex, in the grid's order: a cell's vertices are
+    // read one after another.
+    struct Entry {
+        Vec3 position, normal;
+        double reach;
+    };
+    const std::vector<int32_t> &in_order = grid.points();
+    std::vector<Entry> entry(n);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t k = 0; k < n; ++k)
+        entry[k] = {mesh.pos[in_order[k]], normal[in_order[k]], reach[in_order[k]]};
+
+    // Two fans can meet if their vertices are nearer than the sum of their reaches. Each
+    // vertex looks within twice its own reach, so the one with the longer reach of such a
+    // pair finds it; it records its partner (in parallel, one write each), and both are
+    // marked after.
+    std::vector<int32_t> partner(n, -1);
+#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 256)
+    for (int32_t v = 0; v < n; ++v) {
+        const Vec3 &p = mesh.pos[v], &nv = normal[v];
+        const auto is_neighbour = [&](int32_t w) {
+            bool found = false;
+            mesh.for_each_neighbour(v, [&](int32_t u, int32_t) { found = found || u == w; });
+            return found;
+        };
+        const Vec3 r = Vec3::Constant(2 * reach[v]);
+        grid.for_each_near(p - r, p + r, [&](int32_t k) {
+            if (partner[v] < 0 && nv.dot(entry[k].normal) < 0 &&
+                (entry[k].position - p).norm() < reach[v] + entry[k].reach && in_order[k] != v &&
+                !is_neighbour(in_order[k]))
+                partner[v] = in_order[k];
+        });
+    }
+    for (int32_t v = 0; v < n; ++v)
+        if (partner[v] >= 0)
+            marked[v] = marked[partner[v]] = 1;
+    std::vector<char> watched = marked;
+    for (int32_t v = 0; v < n; ++v)
+        if (marked[v])
+            mesh.for_each_neighbour(v, [&](int32_t w, int32_t) { watched[w] = 1; });
+    return watched;
+}
+
+void CrossingGuard::renumber(const std::vector<int32_t> &vertex_map)
+{
+    std::vector<char> watched(vertex_map.size() - std::count(vertex_map.begin(), vertex_map.end(), -1), 0);
+    for (size_t v = 0; v < vertex_map.size(); ++v)
+        if (vertex_map[v] >= 0)
+            watched[vertex_map[v]] = watched_[v];
+    watched_.swap(watched);
+}
+
+CrossingGuard::Cell CrossingGuard::cell_of(const Vec3 &p) const
+{
+    const Vec3 c = ((p - origin_) / cell_size_).array().floor();
+    return {static_cast<int64_t>(c[0]), static_cast<int64_t>(c[1]), static_cast<int64_t>(c[2])};
+}
+
+template <class Fn>
+void CrossingGuard::for_each_cell(const Vec3 &lo, const Vec3 &hi, Fn &&fn) const
+{
+    const Cell a = cell_of(lo), b = cell_of(hi);
+    for (int64_t i = a[0]; i <= b[0]; ++i)
+        for (int64_t j = a[1]; j <= b[1]; ++j)
+            for (int64_t k = a[2]; k <= b[2]; ++k)
+                fn(cell_key(i, j, k));
+}
+
+const std::vector<int32_t> &CrossingGuard::index_faces(const TriMesh &mesh, const std::vector<Vec3> &pos)
+{
+    faces_in_cell_.clear();
+    faces_.clear();
+    double edge_sum = 0;
+    for (int32_t f = 0; f < mesh.num_triangles(); ++f) {
+        const Triangle &t = mesh.tri[f];
+        if (t[0] < 0 || !watches_any(t))
+            continue;
+        if (faces_.empty())
+            origin_ = pos[t[0]];
+        faces_.push_back(f);
+        for (int k = 0; k < 3; ++k) {
+            edge_sum += (pos[t[(k + 1) % 3]] - pos[t[k]]).norm();
+            origin_ = origin_.cwiseMin(pos[t[k]]);
+        }
+    }
+    // Cells of twice the mean edge: a face's box covers one to a few cells.
+    cell_size_ = faces_.empty() ? 1 : 2 * edge_sum / (3 * faces_.size());
+    if (!(cell_size_ > 0))
+        cell_size_ = 1;
+    for (int32_t f : faces_)
+        refresh(mesh, pos, f);
+    return faces_;
+}
+
+void CrossingGuard::refresh(const TriMesh &mesh, const std::vector<Vec3> &pos, int32_t f)
+{
+    const Triangle &t = mesh.tri[f];
+    if (t[0] < 0 || !watches_any(t))
+        return;
+    const Vec3 lo = pos[t[0]].cwiseMin(pos[t[1]]).cwiseMin(pos[t[2]]);
+    const Vec3 hi = pos[t[0]].cwiseMax(pos[t[1]]).cwiseMax(pos[t[2]]);
+    // A face entered before stays in its old cells too: candidates are tested as they are now.
+    for_each_cell(lo, hi, [&](uint64_t key) {
+        std::vector<int32_t> &faces = faces_in_cell_[key];
+        if (faces.empty() || faces.back() != f)
+            faces.push_back(f);
+    });
+}
+
+bool CrossingGuard::crosses(const TriMesh &mesh, const std::vector<Vec3> &pos, const Triangle &corner,
+                            const Vec3 (&at)[3], int32_t also) const
+{
+    if (faces_in_cell_.empty())
+        return false;
+    const Vec3 lo = at[0].cwiseMin(at[1]).cwiseMin(at[2]), hi = at[0].cwiseMax(at[1]).cwiseMax(at[2]);
+    const Cell first = cell_of(lo), last = cell_of(hi);
+    bool crossing = false;
+    for (int64_t i = first[0]; i <= last[0] && !crossing; ++i)
+        for (int64_t j = first[1]; j <= last[1] && !crossing; ++j)
+            for (int64_t k = first[2]; k <= last[2] && !crossing; ++k) {
+                const auto found = faces_in_cell_.find(cell_key(i, j, k));
+                if (found == faces_in_cell_.end())
+                    continue;
+                for (int32_t f : found->second) {
+                    const Triangle &t = mesh.tri[f];
+                    if (t[0] < 0)
+                        continue; // died in a contraction
+                    bool shares = false;
+                    for (int32_t v : t)
+                        shares = shares || v == corner[0] || v == corner[1] || v == corner[2] || v == also;
+                    const Vec3 &a = pos[t[0]], &b = pos[t[1]], &c = pos[t[2]];
+                    const Vec3 f_lo = a.cwiseMin(b).cwiseMin(c), f_hi = a.cwiseMax(b).cwiseMax(c);
+                    if (shares || (f_lo - hi).maxCoeff() > 0 || (lo - f_hi).maxCoeff() > 0)
+                        continue; // a neighbour, or boxes apart
+                    // Each face once, without a list of those seen: in the first cell where
+                    // both boxes are (the face is entered in every cell its box covers).
+                    const Cell both = cell_of(lo.cwiseMax(f_lo));
+                    if (both[0] != i || both[1] != j || both[2] != k)
+                        continue;
+                    if (triangles_intersect(at[0], at[1], at[2], a, b, c)) {
+                        crossing = true;
+                        break;
+                    }
+                }
+            }
+    return crossing;
+}
+
+} // namespace sfa

@@ -1,0 +1,65 @@
+// Keeping remeshing from passing a surface through itself where it is thinner than an edge.
+// There (the filaments of the vortex flows, a narrow gap between two sheets) the other side
+// is nearer in space than an edge but far away in the mesh, and the local test of each
+// step (no face turns over) does not see it: a smoothing move, a flip, a new vertex or a
+// merged one can land beyond it. Everywhere else no step reaches another part of the
+// surface, so only the faces near such a place are watched, and the check costs little.
+#pragma once
+
+#include "mesh/tri_mesh.hpp"
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace sfa {
+
+// 1 for the vertices near a facing sheet, 0 elsewhere: vertices v and w that are not
+// neighbours are marked if their normals point against each other (the two sides of a thin
+// sheet, or of a narrow gap, face each other) and they are nearer than the sum of their
+// longest edges (their fans can meet); then so is every neighbour of a marked vertex.
+std::vector<char> near_facing_sheet(const TriMesh &mesh);
+
+// The faces with a watched corner, in a uniform grid, to ask whether a face would meet
+// one of them. The watched vertices are carried through the changes of an adaptation
+// (add_vertex, renumber); the grid is built anew (index_faces) after vertices moved or
+// faces were renumbered, and a face an operation changed is entered again (refresh).
+class CrossingGuard {
+public:
+    CrossingGuard() = default;
+    explicit CrossingGuard(std::vector<char> watched) : watched_(std::move(watched)) {}
+
+    bool watches(int32_t v) const { return watched_[v] != 0; }
+    const std::vector<char> &watched() const { return watched_; }
+    bool watches_any(const Triangle &t) const { return watches(t[0]) || watches(t[1]) || watches(t[2]); }
+    void add_vertex(bool watched) { watched_.push_back(watched); }
+    // vertex_map[v] is v's new number, or -1 if v is gone.
+    void renumber(const std::vector<int32_t> &vertex_map);
+
+    // Every face with a watched corner, with its corners at `pos` (mesh.pos, or the
+    // positions a sweep would move the vertices to); returns them.
+    const std::vector<int32_t> &index_faces(const TriMesh &mesh, const std::vector<Vec3> &pos);
+    // Enters face f again, at `pos`, after an operation changed it or made it.
+    void refresh(const TriMesh &mesh, const std::vector<Vec3> &pos, int32_t f);
+
+    // True if a face with corners `corner` at `at` would meet an indexed face (its corners
+    // at `pos`) that is alive and shares no vertex with it nor is a face of vertex `also`
+    // (-1 for none: a contraction's vanishing end). Allocates nothing, and may be called
+    // from parallel loops.
+    bool crosses(const TriMesh &mesh, const std::vector<Vec3> &pos, const Triangle &corner, const Vec3 (&at)[3],
+                 int32_t also = -1) const;
+
+private:
+    using Cell = std::array<int64_t, 3>;
+    Cell cell_of(const Vec3 &p) const;
+    template <class Fn>
+    void for_each_cell(const Vec3 &lo, const Vec3 &hi, Fn &&fn) const;
+
+    std::vector<char> watched_;
+    std::vector<int32_t> faces_;
+    double cell_size_ = 0;
+    Vec3 origin_ = Vec3::Zero();
+    std::unordered_map<uint64_t, std::vector<int32_t>> faces_in_cell_;
+};
+
+} // namespace sfa
