@@ -218,12 +218,9 @@ void CrossingGuard::refresh(const TriMesh &mesh, const std::vector<Vec3> &pos, i
         return;
     const Vec3 lo = pos[t[0]].cwiseMin(pos[t[1]]).cwiseMin(pos[t[2]]);
     const Vec3 hi = pos[t[0]].cwiseMax(pos[t[1]]).cwiseMax(pos[t[2]]);
-    // A face entered before stays in its old cells too: candidates are tested as they are now.
-    for_each_cell(lo, hi, [&](uint64_t key) {
-        std::vector<int32_t> &faces = faces_in_cell_[key];
-        if (faces.empty() || faces.back() != f)
-            faces.push_back(f);
-    });
+    // A face entered before keeps its old entries too: candidates are tested as they are now.
+    const Cell first = cell_of(lo);
+    for_each_cell(lo, hi, [&](uint64_t key) { faces_in_cell_[key].push_back({lo, hi, first, f}); });
 }
 
 bool CrossingGuard::crosses(const TriMesh &mesh, const std::vector<Vec3> &pos, const Triangle &corner,
@@ -240,22 +237,23 @@ bool CrossingGuard::crosses(const TriMesh &mesh, const std::vector<Vec3> &pos, c
                 const auto found = faces_in_cell_.find(cell_key(i, j, k));
                 if (found == faces_in_cell_.end())
                     continue;
-                for (int32_t f : found->second) {
-                    const Triangle &t = mesh.tri[f];
+                for (const Entry &entry : found->second) {
+                    if ((entry.lo - hi).maxCoeff() > 0 || (lo - entry.hi).maxCoeff() > 0)
+                        continue; // boxes apart
+                    // Each entry once, without a list of those seen: in the first cell where
+                    // both boxes are (an entry is in every cell its box covers).
+                    if (std::max(first[0], entry.first[0]) != i || std::max(first[1], entry.first[1]) != j ||
+                        std::max(first[2], entry.first[2]) != k)
+                        continue;
+                    const Triangle &t = mesh.tri[entry.face];
                     if (t[0] < 0)
                         continue; // died in a contraction
                     bool shares = false;
                     for (int32_t v : t)
                         shares = shares || v == corner[0] || v == corner[1] || v == corner[2] || v == also;
+                    if (shares)
+                        continue; // a neighbour
                     const Vec3 &a = pos[t[0]], &b = pos[t[1]], &c = pos[t[2]];
-                    const Vec3 f_lo = a.cwiseMin(b).cwiseMin(c), f_hi = a.cwiseMax(b).cwiseMax(c);
-                    if (shares || (f_lo - hi).maxCoeff() > 0 || (lo - f_hi).maxCoeff() > 0)
-                        continue; // a neighbour, or boxes apart
-                    // Each face once, without a list of those seen: in the first cell where
-                    // both boxes are (the face is entered in every cell its box covers).
-                    const Cell both = cell_of(lo.cwiseMax(f_lo));
-                    if (both[0] != i || both[1] != j || both[2] != k)
-                        continue;
                     if (triangles_intersect(at[0], at[1], at[2], a, b, c)) {
                         crossing = true;
                         break;

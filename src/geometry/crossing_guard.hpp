@@ -59,7 +59,12 @@ private:
     std::vector<int32_t> faces_;
     double cell_size_ = 0;
     Vec3 origin_ = Vec3::Zero();
-    std::unordered_map<uint64_t, std::vector<int32_t>> faces_in_cell_;
+    struct Entry {
+        Vec3 lo, hi; // the face's box when it was entered
+        Cell first;  // the cell of lo
+        int32_t face;
+    };
+    std::unordered_map<uint64_t, std::vector<Entry>> faces_in_cell_;
 };
 
 } // namespace sfa
