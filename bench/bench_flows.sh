@@ -4,7 +4,8 @@
 # and per phase inside them (analysis, smoothing, flipping, splitting and contraction),
 # vertex counts, volume errors, the largest normal turn and crossings, and the ratio of
 # smoothing + adaptation time to bare advection time in the same run. The shorter runs are
-# repeated (RUNS, default 3) and a last line per experiment gives the median time.
+# repeated (RUNS, default 3) and a last line per experiment gives the median time. Enright
+# runs also without the crossing guard, to show what the guard costs.
 set -eu
 cd "$(dirname "$0")/.."
 tool=${SURFADAPT:-bin/surfadapt}
@@ -29,6 +30,7 @@ flow() {
 }
 
 flow enright "$runs" enright
+flow enright_no_crossing_guard "$runs" enright --no-crossing-guard
 flow vortex_t2 "$runs" vortex --period 2
 flow vortex_t2_isotropic "$runs" vortex --period 2 --isotropic
 flow vortex_t6 1 vortex --period 6

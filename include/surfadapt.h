@@ -157,7 +157,14 @@ enum sfa_param {
         most 1 in 100 vertices. A host that adapts every few steps of a flow sets 1: the
         second pass of a call changes only about 1 in 200 vertices but costs as much as the
         first, and what one pass leaves is picked up by the next call. */
-    SFA_PARAM_ADAPT_PASSES = 19
+    SFA_PARAM_ADAPT_PASSES = 19,
+    /** 1 (default): sfa_adapt() and sfa_smooth() do not pass the surface through itself
+        where a sheet is thinner than an edge (see sfa_adapt()); 0: they do not check. The
+        check costs little where the surface is nowhere thin (finding the thin places, about
+        3 % of an adaptation), and up to about 10 % of the adaptation time where much of it
+        is (the Enright test at its most stretched). A host whose surface cannot thin out
+        may set 0. */
+    SFA_PARAM_CROSSING_GUARD = 20
 };
 
 /** Quantities for sfa_measure(). */
@@ -392,9 +399,10 @@ int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t, double dt
  * every ridge or boundary vertex moves along the circle through itself and its two ridge
  * neighbours (the line, where they are collinear); corners do not move. A vertex whose
  * move would fold a triangle stays put for that sweep, and so do the corners of a triangle
- * that would pass through another part of the surface (where a sheet is thinner than an
- * edge, its other side is that near; such places are found by the last sfa_adapt(), or by
- * this call if the mesh was set since). After each sweep a closed surface
+ * that would pass through another part of the surface (::SFA_PARAM_CROSSING_GUARD, on by
+ * default: where a sheet is thinner than an edge, its other side is that near; such places
+ * are found by the last sfa_adapt(), or by this call if the mesh was set since). After
+ * each sweep a closed surface
  * gets its enclosed volume back by a common offset of its smooth vertices along their
  * normals (a correction in the primary space), so smoothing alone never changes the volume.
  * Fields are interpolated at the new positions. Connectivity and vertex order do not
@@ -415,10 +423,10 @@ int sfa_smooth(sfa_surface *s, int32_t iterations);
  * sfa_smooth()), each after a fresh analysis. Every
  * threshold is a parameter (§4.3). A closed surface ends with the enclosed volume it
  * started with (to round-off). Corners never move; ridge vertices stay on their ridge
- * curves; boundaries stay boundaries. Splits, contractions, flips and sweeps are kept
- * from passing the surface through itself: where a sheet is thinner than an edge (the
- * filaments of a strong vortex), an operation that would carry a triangle through a
- * triangle of the other side is not made. (Motion can still bring two sheets nearer than the mesh resolves:
+ * curves; boundaries stay boundaries. With ::SFA_PARAM_CROSSING_GUARD (on by default),
+ * splits, contractions, flips and sweeps are kept from passing the surface through itself:
+ * where a sheet is thinner than an edge (the filaments of a strong vortex), an operation
+ * that would carry a triangle through a triangle of the other side is not made. (Motion can still bring two sheets nearer than the mesh resolves:
  * sfa_measure() ::SFA_MEASURE_SELF_INTERSECTIONS counts the crossings.)
  *
  * Vertex and triangle counts change and vertices are renumbered: read the mesh back with

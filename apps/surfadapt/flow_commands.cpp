@@ -27,6 +27,8 @@ bool read_flow_options(int argc, char **argv, int first, FlowRun &run, const cha
             run.report_every = int_option(argc, argv, i, 1, 1000000);
         else if (!std::strcmp(argv[i], "--isotropic"))
             run.isotropic = true;
+        else if (!std::strcmp(argv[i], "--no-crossing-guard"))
+            run.crossing_guard = false;
         else if (!std::strcmp(argv[i], "--denoise"))
             run.denoise = fraction_option(argc, argv, i);
         else if (!std::strcmp(argv[i], "--json"))

@@ -23,6 +23,7 @@ struct FlowRun {
     int report_every;     // table rows (and saved steps)
     bool json = false;    // also print the summary as one JSON line (for benchmarks)
     double denoise = 0;   // SFA_PARAM_DENOISE
+    bool crossing_guard = true; // SFA_PARAM_CROSSING_GUARD
 };
 
 struct FlowResult {

@@ -57,6 +57,7 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_PARAM_THREADS = 17
   integer(c_int), parameter, public :: SFA_PARAM_DENOISE = 18
   integer(c_int), parameter, public :: SFA_PARAM_ADAPT_PASSES = 19
+  integer(c_int), parameter, public :: SFA_PARAM_CROSSING_GUARD = 20
 
   ! --------------------------------------------------- enum sfa_measure_quantity
   integer(c_int), parameter, public :: SFA_MEASURE_VOLUME = 0

@@ -40,7 +40,10 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
         changed.assign(mesh.pos.size(), 0);
     };
     // Where the surface is thinner than an edge, no step may carry it through itself.
-    CrossingGuard guard = timed(seconds.analysis, [&] { return CrossingGuard(near_facing_sheet(mesh)); });
+    CrossingGuard guard;
+    CrossingGuard *const guarded = settings.crossing_guard ? &guard : nullptr;
+    if (guarded)
+        guard = timed(seconds.analysis, [&] { return CrossingGuard(near_facing_sheet(mesh)); });
     const bool closed = mesh.is_closed();
     const double volume = enclosed_volume(mesh);
     while (counts.passes < settings.max_passes) {
@@ -50,23 +53,23 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
         // Repair first (§4): the density the desired edge length asks for, and no extreme
         // angles; then optimization (§3) of the repaired mesh.
         const int32_t splits = timed(seconds.repair, [&] {
-            return splitting_pass(mesh, settings.repair, features, fields, changed, &guard);
+            return splitting_pass(mesh, settings.repair, features, fields, changed, guarded);
         });
         analyse_changed();
         const int32_t contractions = timed(seconds.repair, [&] {
-            return contraction_pass(mesh, geometry, settings.repair, features, fields, changed, &guard);
+            return contraction_pass(mesh, geometry, settings.repair, features, fields, changed, guarded);
         });
         analyse_changed();
         const int32_t flips = timed(seconds.flipping, [&] {
             const FlipSettings flip_settings{settings.metric, settings.flip_max_dihedral};
-            return flipping_pass(mesh, geometry, flip_settings, &changed, &guard);
+            return flipping_pass(mesh, geometry, flip_settings, &changed, guarded);
         });
         analyse_changed();
         for (int sweep = 0; sweep < settings.smoothing_sweeps; ++sweep) {
             if (sweep > 0)
                 analyse_all();
             PhaseClock clock(seconds.smoothing);
-            std::vector<Vec3> moved = smoothing_sweep(mesh, geometry, settings.denoise, &guard);
+            std::vector<Vec3> moved = smoothing_sweep(mesh, geometry, settings.denoise, guarded);
             fields = fields_at_moved_vertices(mesh, moved, fields);
             mesh.pos.swap(moved);
         }
@@ -91,9 +94,10 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
         PhaseClock clock(seconds.repair);
         const std::vector<int32_t> vertex_map = order_for_locality(mesh);
         renumber_fields(fields, vertex_map);
-        guard.renumber(vertex_map);
+        if (guarded)
+            guard.renumber(vertex_map);
     }
-    near_sheet = guard.watched();
+    near_sheet = guarded ? guard.watched() : std::vector<char>();
     return counts;
 }
 

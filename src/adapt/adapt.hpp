@@ -19,6 +19,7 @@ struct AdaptSettings {
     int max_passes;       // iterations at most
     int smoothing_sweeps; // per iteration
     double denoise;       // weight in every sweep (smoothing_sweep)
+    bool crossing_guard;  // no step passes the surface through itself (crossing_guard.hpp)
 };
 
 struct AdaptCounts {
@@ -33,9 +34,10 @@ struct AdaptCounts {
 // (restore_enclosed_volume), and if edges were split or contracted, the mesh is renumbered
 // for locality (locality_order.hpp). The fields (one value set per vertex) follow every
 // step. The mesh stays dense and valid. The seconds of each phase are counted in the result.
-// No step carries the surface through itself where it is thinner than an edge
-// (crossing_guard.hpp): the vertices near a facing sheet are found at the start and carried
-// through the call; on return `near_sheet` holds them, numbered as the returned mesh.
+// With the crossing guard, no step carries the surface through itself where it is thinner
+// than an edge (crossing_guard.hpp): the vertices near a facing sheet are found at the
+// start and carried through the call; on return `near_sheet` holds them, numbered as the
+// returned mesh (empty without the guard).
 AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
                           std::vector<char> &near_sheet);
 

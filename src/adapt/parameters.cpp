@@ -43,6 +43,7 @@ const Spec specs[] = {
     {"SFA_PARAM_THREADS", 0, Kind::whole_number, 0, 4096},
     {"SFA_PARAM_DENOISE", 0, Kind::closed_interval, 0, 1},
     {"SFA_PARAM_ADAPT_PASSES", 8, Kind::whole_number, 1, 100},
+    {"SFA_PARAM_CROSSING_GUARD", 1, Kind::flag, 0, 1},
 };
 static_assert(sizeof specs / sizeof specs[0] == static_cast<size_t>(Param::count), "one spec per key");
 

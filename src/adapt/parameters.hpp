@@ -27,6 +27,7 @@ enum class Param : int {
     threads,
     denoise,
     adapt_passes,
+    crossing_guard,
     count
 };
 

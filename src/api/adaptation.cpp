@@ -38,13 +38,17 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
             const bool closed = mesh.is_closed();
             // The last adaptation's findings where there was one (a flow adapts every few
             // steps, and a sheet thins slowly), else this surface's own.
-            CrossingGuard guard = timed(seconds.analysis, [&] {
-                return CrossingGuard(s->near_sheet.size() == mesh.pos.size() ? s->near_sheet : near_facing_sheet(mesh));
-            });
+            CrossingGuard guard;
+            CrossingGuard *const guarded = s->params.get(Param::crossing_guard) != 0 ? &guard : nullptr;
+            if (guarded)
+                guard = timed(seconds.analysis, [&] {
+                    return CrossingGuard(s->near_sheet.size() == mesh.pos.size() ? s->near_sheet
+                                                                                 : near_facing_sheet(mesh));
+                });
             for (int32_t sweep = 0; sweep < iterations; ++sweep) {
                 const SurfaceAnalysis analysis = timed(seconds.analysis, [&] { return current_analysis(s, mesh); });
                 PhaseClock clock(seconds.smoothing);
-                std::vector<Vec3> moved = smoothing_sweep(mesh, analysis, s->params.get(Param::denoise), &guard);
+                std::vector<Vec3> moved = smoothing_sweep(mesh, analysis, s->params.get(Param::denoise), guarded);
                 fields = fields_at_moved_vertices(mesh, moved, fields);
                 mesh.pos.swap(moved);
                 if (closed)
@@ -68,7 +72,8 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
         const AdaptSettings settings{feature_thresholds(p), metric_bounds(p), p.get(Param::flip_dihedral_angle) * radians,
                                      repair_settings(p, edge_length), static_cast<int>(p.get(Param::adapt_passes)),
                                      smoothing_sweeps_per_pass,
-                                     p.get(Param::denoise)};
+                                     p.get(Param::denoise),
+                                     p.get(Param::crossing_guard) != 0};
 
         // Work on copies; the velocities travel as one more field. Commit only at the end.
         TriMesh mesh = s->mesh;

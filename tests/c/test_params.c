@@ -27,6 +27,7 @@ static double expected_default(int key)
     case SFA_PARAM_THREADS: return 0;
     case SFA_PARAM_DENOISE: return 0;
     case SFA_PARAM_ADAPT_PASSES: return 8;
+    case SFA_PARAM_CROSSING_GUARD: return 1;
     default: return NAN;
     }
 }
@@ -55,6 +56,7 @@ static double valid_value(int key)
     case SFA_PARAM_THREADS: return 1;
     case SFA_PARAM_DENOISE: return 1;
     case SFA_PARAM_ADAPT_PASSES: return 1;
+    case SFA_PARAM_CROSSING_GUARD: return 0;
     default: return NAN;
     }
 }
@@ -83,6 +85,7 @@ static int invalid_values(int key, double out[4])
     case SFA_PARAM_THREADS: out[0] = -1; out[1] = 1.5; out[2] = 5000; return 3;
     case SFA_PARAM_DENOISE: out[0] = -1e-9; out[1] = 1.0000001; return 2;
     case SFA_PARAM_ADAPT_PASSES: out[0] = 0; out[1] = 2.5; out[2] = 101; return 3;
+    case SFA_PARAM_CROSSING_GUARD: out[0] = 0.5; out[1] = 2; out[2] = -1; return 3;
     default: return 0;
     }
 }

@@ -44,6 +44,8 @@ check "enright --denoise 1 (coarse, 60 steps) exits 0" \
 cat "$work/denoised.txt"
 check "enright --denoise 1: volume within 0.5 %, no fold" summary_ok "$work/denoised.txt"
 
+check "--no-crossing-guard turns the guard off (and the run says so)" \
+  sh -c "'$tool' enright --resolution 4 --steps 2 --no-crossing-guard | grep -q 'crossing guard off'"
 check "--help after a command prints the usage and exits 0" \
   sh -c "'$tool' vortex --help | grep -q -- '--denoise W'"
 check "a denoising weight outside [0, 1] is refused" sh -c "'$tool' enright --denoise 2 2>/dev/null; [ \$? -eq 2 ]"

@@ -14,7 +14,7 @@
 #include <stdint.h>
 
 /* Number of parameter keys of the API (SFA_PARAM_EDGE_LENGTH .. SFA_PARAM_DENOISE). */
-#define SHAPES_NPARAMS 20
+#define SHAPES_NPARAMS 21
 
 /* [0,1]^3: 8 vertices, 12 triangles, each face split along one diagonal. */
 sfa_mesh_data shape_unit_cube(void);
