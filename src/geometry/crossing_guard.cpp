@@ -24,15 +24,15 @@ uint64_t cell_key(int64_t i, int64_t j, int64_t k)
 // sort, no hashing).
 class PointGrid {
 public:
-    PointGrid(const std::vector<Vec3> &points, double cell) : origin_(points[0]), high_(points[0])
+    PointGrid(const std::vector<Vec3> &points, double cell) : origin_(points[0])
     {
+        Vec3 high = points[0];
         for (const Vec3 &p : points) {
             origin_ = origin_.cwiseMin(p);
-            high_ = high_.cwiseMax(p);
+            high = high.cwiseMax(p);
         }
-        const auto cells_for = [&](double size) {
-            const Eigen::Array3d count = ((high_ - origin_) / size).array().floor() + 1;
-            return count;
+        const auto cells_for = [&](double size) -> Eigen::Array3d {
+            return ((high - origin_) / size).array().floor() + 1;
         };
         const double limit = 8.0 * static_cast<double>(points.size()) + 64;
         if (cells_for(cell).prod() > limit) // a thin surface in a large box
@@ -88,7 +88,7 @@ private:
                 std::clamp<int64_t>(static_cast<int64_t>(c[2]), 0, nz_ - 1)};
     }
 
-    Vec3 origin_, high_;
+    Vec3 origin_;
     double cell_ = 1;
     int64_t nx_ = 1, ny_ = 1, nz_ = 1;
     std::vector<int32_t> start_; // cell c's points are point_[start_[c]] .. point_[start_[c + 1] - 1]
