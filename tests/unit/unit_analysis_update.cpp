@@ -4,6 +4,7 @@
 #include "adapt/contract.hpp"
 #include "adapt/flip.hpp"
 #include "adapt/split.hpp"
+#include "api/analysis_settings.hpp"
 #include "mesh/validate.hpp"
 
 #include <cmath>
@@ -22,9 +23,9 @@ using namespace sfa;
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
-const FeatureThresholds thresholds{45 * pi / 180, 20 * pi / 180, 40 * pi / 180};
-const MetricBounds bounds{8 * pi / 180, 30 * pi / 180, true};
+// The library's defaults (the paper's).
+const FeatureThresholds thresholds = feature_thresholds(Parameters());
+const MetricBounds bounds = metric_bounds(Parameters());
 
 // Bitwise equality of every per-vertex entry.
 void assert_same_geometry(const SurfaceAnalysis &updated, const SurfaceAnalysis &full)
@@ -68,7 +69,7 @@ void each_pass_leaves_the_analysis_a_full_one_would_give(void **)
 
         changed.assign(mesh.pos.size(), 0);
         geometry.features = features.as_features(mesh);
-        flips += flipping_pass(mesh, geometry, FlipSettings{bounds, 20 * pi / 180}, &changed);
+        flips += flipping_pass(mesh, geometry, FlipSettings{bounds, Parameters().get(Param::flip_dihedral_angle) * radians}, &changed);
         update_geometry(mesh, changed, bounds, geometry);
         assert_same_geometry(geometry, analyze_geometry(mesh, bounds));
     }

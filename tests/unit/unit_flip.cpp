@@ -4,6 +4,7 @@
 // flipping stretches a cylinder's triangles along its axis.
 #include "adapt/flip.hpp"
 #include "adapt/smooth.hpp"
+#include "api/analysis_settings.hpp"
 #include "geometry/measures.hpp"
 #include "mesh/edge_flip.hpp"
 #include "mesh/invariants.hpp"
@@ -31,9 +32,10 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-const FeatureThresholds default_thresholds{45 * pi / 180, 20 * pi / 180, 40 * pi / 180};
-const MetricBounds default_bounds{8 * pi / 180, 30 * pi / 180, true};
-const FlipSettings default_flips{default_bounds, 20 * pi / 180};
+// The library's defaults (the paper's).
+const FeatureThresholds default_thresholds = feature_thresholds(Parameters());
+const MetricBounds default_bounds = metric_bounds(Parameters());
+const FlipSettings default_flips{default_bounds, Parameters().get(Param::flip_dihedral_angle) * radians};
 
 TriMesh mesh_of(const std::vector<double> &xyz, const std::vector<int32_t> &tris)
 {
@@ -305,7 +307,8 @@ struct CylinderRun {
 // Ten rounds of one smoothing sweep and one flipping pass, each after a fresh analysis.
 CylinderRun smooth_and_flip_cylinder(int segments, int rings, bool anisotropic)
 {
-    const MetricBounds bounds{8 * pi / 180, 30 * pi / 180, anisotropic};
+    MetricBounds bounds = default_bounds;
+    bounds.anisotropic = anisotropic;
     CylinderRun run{{}, {}, 0, staggered_cylinder(segments, rings)};
     run.before = side_shape(run.mesh, analyze_surface(run.mesh, default_thresholds, default_bounds));
     for (int round = 0; round < 10; ++round) {
