@@ -16,7 +16,7 @@ constexpr double settled_fraction = 1e-2;
 } // namespace
 
 AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
-                          std::vector<char> &near_sheet)
+                          std::vector<char> &near_sheet, SurfaceAnalysis &workspace)
 {
     AdaptCounts counts;
     PhaseTimes &seconds = counts.seconds;
@@ -24,13 +24,13 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
     // moved (at the start and after each sweep). After splitting, contraction and flipping
     // only the vertices whose fans changed are analysed anew (update_geometry): the same
     // result as a full analysis, for a fraction of its cost.
-    SurfaceAnalysis geometry =
-        timed(seconds.analysis, [&] { return analyze_surface(mesh, settings.features, settings.metric); });
+    SurfaceAnalysis &geometry = workspace;
+    timed(seconds.analysis, [&] { analyze_surface(mesh, settings.features, settings.metric, geometry); });
     CarriedFeatures features(geometry.features);
     std::vector<char> changed;
     const auto analyse_all = [&] {
         PhaseClock clock(seconds.analysis);
-        geometry = analyze_geometry(mesh, settings.metric);
+        analyze_geometry(mesh, settings.metric, geometry);
         geometry.features = features.as_features(mesh);
     };
     const auto analyse_changed = [&] {

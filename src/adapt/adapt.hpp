@@ -37,8 +37,10 @@ struct AdaptCounts {
 // With the crossing guard, no step carries the surface through itself where it is thinner
 // than an edge (crossing_guard.hpp): the vertices near a facing sheet are found at the
 // start and carried through the call; on return `near_sheet` holds them, numbered as the
-// returned mesh (empty without the guard).
+// returned mesh (empty without the guard). The analyses are made in `workspace`, whose
+// contents on entry do not matter and on return mean nothing; keeping it from call to call
+// keeps its memory.
 AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
-                          std::vector<char> &near_sheet);
+                          std::vector<char> &near_sheet, SurfaceAnalysis &workspace);
 
 } // namespace sfa

@@ -45,8 +45,11 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
                     return CrossingGuard(s->near_sheet.size() == mesh.pos.size() ? s->near_sheet
                                                                                  : near_facing_sheet(mesh));
                 });
+            const FeatureThresholds thresholds = feature_thresholds(s->params);
+            const MetricBounds bounds = metric_bounds(s->params);
+            SurfaceAnalysis &analysis = s->analysis_workspace;
             for (int32_t sweep = 0; sweep < iterations; ++sweep) {
-                const SurfaceAnalysis analysis = timed(seconds.analysis, [&] { return current_analysis(s, mesh); });
+                timed(seconds.analysis, [&] { analyze_surface(mesh, thresholds, bounds, analysis); });
                 PhaseClock clock(seconds.smoothing);
                 std::vector<Vec3> moved = smoothing_sweep(mesh, analysis, s->params.get(Param::denoise), guarded);
                 fields = fields_at_moved_vertices(mesh, moved, fields);
@@ -87,7 +90,7 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
             data.push_back(std::move(velocity));
         }
         std::vector<char> near_sheet;
-        const AdaptCounts counts = adapt_surface(mesh, data, settings, near_sheet);
+        const AdaptCounts counts = adapt_surface(mesh, data, settings, near_sheet, s->analysis_workspace);
         const std::string broken = invariant_violation(mesh);
         if (!broken.empty())
             fail(Status::internal, ("the adapted mesh is broken (" + broken + "); the surface is unchanged").c_str());

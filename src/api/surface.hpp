@@ -6,6 +6,7 @@
 #include "adapt/parameters.hpp"
 #include "adapt/phase_times.hpp"
 #include "fields/vertex_fields.hpp"
+#include "geometry/analysis.hpp"
 #include "mesh/tri_mesh.hpp"
 
 #include <cstdint>
@@ -24,6 +25,10 @@ struct sfa_surface {
     // found them, for the sfa_smooth calls until the next; empty if the connectivity
     // changed since (sfa_set_mesh).
     std::vector<char> near_sheet;
+    // Memory for the analyses of sfa_smooth and sfa_adapt, kept so that a flow, which calls
+    // them on every step, does not allocate it anew each time; its contents mean nothing
+    // between calls.
+    sfa::SurfaceAnalysis analysis_workspace;
 
     // A fixed buffer, so that reporting an error (out of memory included) never allocates.
     mutable char last_error[1024] = "";

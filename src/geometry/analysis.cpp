@@ -19,10 +19,10 @@ void analyze_vertex(const TriMesh &mesh, int32_t v, AreaVector &&area_vector, We
     analysis.metric[v] = vertex_metric(analysis.eigen[v], outward, bounds);
 }
 
-SurfaceAnalysis geometry_of(const TriMesh &mesh, const std::vector<Vec3> &area_vectors, const MetricBounds &bounds)
+void geometry_of(const TriMesh &mesh, const std::vector<Vec3> &area_vectors, const MetricBounds &bounds,
+                 SurfaceAnalysis &analysis)
 {
     const std::vector<Vec3> weighted = weighted_normals(area_vectors);
-    SurfaceAnalysis analysis;
     analysis.quadric.resize(mesh.pos.size());
     analysis.eigen.resize(mesh.pos.size());
     analysis.metric.resize(mesh.pos.size());
@@ -31,21 +31,34 @@ SurfaceAnalysis geometry_of(const TriMesh &mesh, const std::vector<Vec3> &area_v
         analyze_vertex(
             mesh, v, [&](int32_t t) -> const Vec3 & { return area_vectors[t]; },
             [&](int32_t t) -> const Vec3 & { return weighted[t]; }, bounds, analysis);
-    return analysis;
 }
 
 } // namespace
 
+void analyze_geometry(const TriMesh &mesh, const MetricBounds &bounds, SurfaceAnalysis &analysis)
+{
+    geometry_of(mesh, face_area_vectors(mesh), bounds, analysis);
+}
+
+void analyze_surface(const TriMesh &mesh, const FeatureThresholds &thresholds, const MetricBounds &bounds,
+                     SurfaceAnalysis &analysis)
+{
+    const std::vector<Vec3> area_vectors = face_area_vectors(mesh);
+    geometry_of(mesh, area_vectors, bounds, analysis);
+    analysis.features = detect_features(mesh, analysis.eigen, area_vectors, thresholds);
+}
+
 SurfaceAnalysis analyze_geometry(const TriMesh &mesh, const MetricBounds &bounds)
 {
-    return geometry_of(mesh, face_area_vectors(mesh), bounds);
+    SurfaceAnalysis analysis;
+    analyze_geometry(mesh, bounds, analysis);
+    return analysis;
 }
 
 SurfaceAnalysis analyze_surface(const TriMesh &mesh, const FeatureThresholds &thresholds, const MetricBounds &bounds)
 {
-    const std::vector<Vec3> area_vectors = face_area_vectors(mesh);
-    SurfaceAnalysis analysis = geometry_of(mesh, area_vectors, bounds);
-    analysis.features = detect_features(mesh, analysis.eigen, area_vectors, thresholds);
+    SurfaceAnalysis analysis;
+    analyze_surface(mesh, thresholds, bounds, analysis);
     return analysis;
 }
 
@@ -65,16 +78,15 @@ void update_geometry(const TriMesh &mesh, const std::vector<char> &changed, cons
 
 void renumber_vertices(SurfaceAnalysis &analysis, const std::vector<int32_t> &vertex_map)
 {
+    // vertex_map[v] <= v, increasing: each entry moves down onto one already read.
     const auto renumbered = [&](auto &values) {
-        std::remove_reference_t<decltype(values)> out(values.size());
         size_t count = 0;
         for (size_t v = 0; v < vertex_map.size(); ++v)
             if (vertex_map[v] >= 0) {
-                out[vertex_map[v]] = values[v];
+                values[vertex_map[v]] = values[v];
                 ++count;
             }
-        out.resize(count);
-        values.swap(out);
+        values.resize(count);
     };
     renumbered(analysis.quadric);
     renumbered(analysis.eigen);
