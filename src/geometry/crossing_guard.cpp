@@ -187,8 +187,8 @@ void CrossingGuard::for_each_cell(const Vec3 &lo, const Vec3 &hi, Fn &&fn) const
 
 const std::vector<int32_t> &CrossingGuard::index_faces(const TriMesh &mesh, const std::vector<Vec3> &pos)
 {
-    faces_in_cell_.clear();
     faces_.clear();
+    entries_.clear();
     double edge_sum = 0;
     for (int32_t f = 0; f < mesh.num_triangles(); ++f) {
         const Triangle &t = mesh.tri[f];
@@ -202,10 +202,16 @@ const std::vector<int32_t> &CrossingGuard::index_faces(const TriMesh &mesh, cons
             origin_ = origin_.cwiseMin(pos[t[k]]);
         }
     }
-    // Cells of twice the mean edge: a face's box covers one to a few cells.
+    // Cells of twice the mean edge: a face's box covers one to a few cells. Four buckets
+    // per face keep the chains short, the refreshed faces of a pass included.
     cell_size_ = faces_.empty() ? 1 : 2 * edge_sum / (3 * faces_.size());
     if (!(cell_size_ > 0))
         cell_size_ = 1;
+    int bits = 4;
+    while ((size_t{1} << bits) < 4 * faces_.size())
+        ++bits;
+    bucket_shift_ = 64 - bits;
+    bucket_head_.assign(size_t{1} << bits, -1);
     for (int32_t f : faces_)
         refresh(mesh, pos, f);
     return faces_;
@@ -214,53 +220,53 @@ const std::vector<int32_t> &CrossingGuard::index_faces(const TriMesh &mesh, cons
 void CrossingGuard::refresh(const TriMesh &mesh, const std::vector<Vec3> &pos, int32_t f)
 {
     const Triangle &t = mesh.tri[f];
-    if (t[0] < 0 || !watches_any(t))
+    if (t[0] < 0 || !watches_any(t) || bucket_head_.empty())
         return;
     const Vec3 lo = pos[t[0]].cwiseMin(pos[t[1]]).cwiseMin(pos[t[2]]);
     const Vec3 hi = pos[t[0]].cwiseMax(pos[t[1]]).cwiseMax(pos[t[2]]);
-    // A face entered before keeps its old entries too: candidates are tested as they are now.
-    const Cell first = cell_of(lo);
-    for_each_cell(lo, hi, [&](uint64_t key) { faces_in_cell_[key].push_back({lo, hi, first, f}); });
+    // A face entered before keeps its old entries too; they only bring it up again.
+    for_each_cell(lo, hi, [&](uint64_t key) {
+        int32_t &head = bucket_head_[bucket_of(key)];
+        entries_.push_back({key, f, head});
+        head = static_cast<int32_t>(entries_.size() - 1);
+    });
 }
 
 bool CrossingGuard::crosses(const TriMesh &mesh, const std::vector<Vec3> &pos, const Triangle &corner,
                             const Vec3 (&at)[3], int32_t also) const
 {
-    if (faces_in_cell_.empty())
+    if (entries_.empty())
         return false;
     const Vec3 lo = at[0].cwiseMin(at[1]).cwiseMin(at[2]), hi = at[0].cwiseMax(at[1]).cwiseMax(at[2]);
     const Cell first = cell_of(lo), last = cell_of(hi);
-    bool crossing = false;
-    for (int64_t i = first[0]; i <= last[0] && !crossing; ++i)
-        for (int64_t j = first[1]; j <= last[1] && !crossing; ++j)
-            for (int64_t k = first[2]; k <= last[2] && !crossing; ++k) {
-                const auto found = faces_in_cell_.find(cell_key(i, j, k));
-                if (found == faces_in_cell_.end())
-                    continue;
-                for (const Entry &entry : found->second) {
-                    if ((entry.lo - hi).maxCoeff() > 0 || (lo - entry.hi).maxCoeff() > 0)
-                        continue; // boxes apart
-                    // Each entry once, without a list of those seen: in the first cell where
-                    // both boxes are (an entry is in every cell its box covers).
-                    if (std::max(first[0], entry.first[0]) != i || std::max(first[1], entry.first[1]) != j ||
-                        std::max(first[2], entry.first[2]) != k)
-                        continue;
-                    const Triangle &t = mesh.tri[entry.face];
+    for (int64_t i = first[0]; i <= last[0]; ++i)
+        for (int64_t j = first[1]; j <= last[1]; ++j)
+            for (int64_t k = first[2]; k <= last[2]; ++k) {
+                const uint64_t key = cell_key(i, j, k);
+                for (int32_t e = bucket_head_[bucket_of(key)]; e >= 0; e = entries_[e].next) {
+                    if (entries_[e].key != key)
+                        continue; // another cell in the bucket
+                    const Triangle &t = mesh.tri[entries_[e].face];
                     if (t[0] < 0)
                         continue; // died in a contraction
+                    const Vec3 &a = pos[t[0]], &b = pos[t[1]], &c = pos[t[2]];
+                    const Vec3 face_lo = a.cwiseMin(b).cwiseMin(c), face_hi = a.cwiseMax(b).cwiseMax(c);
+                    if ((face_lo - hi).maxCoeff() > 0 || (lo - face_hi).maxCoeff() > 0)
+                        continue; // boxes apart
+                    // Each face once, without a list of those seen: in the first cell where
+                    // both boxes are (its latest entry is in every cell its box covers).
+                    const Cell face_first = cell_of(face_lo);
+                    if (std::max(first[0], face_first[0]) != i || std::max(first[1], face_first[1]) != j ||
+                        std::max(first[2], face_first[2]) != k)
+                        continue;
                     bool shares = false;
                     for (int32_t v : t)
                         shares = shares || v == corner[0] || v == corner[1] || v == corner[2] || v == also;
-                    if (shares)
-                        continue; // a neighbour
-                    const Vec3 &a = pos[t[0]], &b = pos[t[1]], &c = pos[t[2]];
-                    if (triangles_intersect(at[0], at[1], at[2], a, b, c)) {
-                        crossing = true;
-                        break;
-                    }
+                    if (!shares && triangles_intersect(at[0], at[1], at[2], a, b, c))
+                        return true;
                 }
             }
-    return crossing;
+    return false;
 }
 
 } // namespace sfa

@@ -9,7 +9,6 @@
 #include "mesh/tri_mesh.hpp"
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 namespace sfa {
@@ -55,16 +54,24 @@ private:
     template <class Fn>
     void for_each_cell(const Vec3 &lo, const Vec3 &hi, Fn &&fn) const;
 
+    // The entries of the faces, chained per bucket of their cell's key, in flat arrays:
+    // entering a face allocates nothing per cell (a map of vectors spent more on allocation
+    // than the queries did). An entry keeps only the face: its box is taken from the
+    // positions when asked, and the latest entry of a face covers its box as it is.
+    struct Entry {
+        uint64_t key; // the cell
+        int32_t face;
+        int32_t next; // the bucket's next entry, or -1
+    };
+    size_t bucket_of(uint64_t key) const { return (key * 0x9E3779B97F4A7C15u) >> bucket_shift_; }
+
     std::vector<char> watched_;
     std::vector<int32_t> faces_;
     double cell_size_ = 0;
     Vec3 origin_ = Vec3::Zero();
-    struct Entry {
-        Vec3 lo, hi; // the face's box when it was entered
-        Cell first;  // the cell of lo
-        int32_t face;
-    };
-    std::unordered_map<uint64_t, std::vector<Entry>> faces_in_cell_;
+    std::vector<int32_t> bucket_head_; // per bucket: its first entry, or -1
+    std::vector<Entry> entries_;
+    int bucket_shift_ = 63;
 };
 
 } // namespace sfa
