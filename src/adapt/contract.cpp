@@ -102,32 +102,39 @@ bool faces_survive(const TriMesh &mesh, int32_t h, const Vec3 &merged)
 // True if no face around the merged vertex would pass through a face around the ends'
 // neighbours that it shares no vertex with. Where a sheet is thinner than an edge (the
 // filaments of the vortex flow), the other side of the sheet is that close, and a merged
-// vertex can land beyond it although every face keeps its own orientation.
-bool stays_clear_of_neighbours(const TriMesh &mesh, int32_t h, const Vec3 &merged)
+// vertex can land beyond it although every face keeps its own orientation. `nearby` is
+// scratch space, kept by the caller so that the candidates of a pass allocate nothing.
+bool stays_clear_of_neighbours(const TriMesh &mesh, int32_t h, const Vec3 &merged, std::vector<int32_t> &nearby)
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
     const auto corner = [&](int32_t v) { return v == a || v == b ? merged : mesh.pos[v]; };
     const auto same = [&](int32_t v) { return v == a ? b : v; }; // a and b become one vertex
+    // The faces around the neighbours, each once (a face is around up to three of them).
+    nearby.clear();
+    for (int32_t end : {a, b})
+        mesh.for_each_neighbour(end, [&](int32_t w, int32_t) {
+            mesh.for_each_outgoing(w, [&](int32_t g) { nearby.push_back(TriMesh::face(g)); });
+        });
+    std::sort(nearby.begin(), nearby.end());
+    nearby.erase(std::unique(nearby.begin(), nearby.end()), nearby.end());
     bool clear = true;
     for_each_face_around(mesh, h, [&](int32_t f) {
         const Triangle &t = mesh.tri[f];
         const bool has_a = t[0] == a || t[1] == a || t[2] == a, has_b = t[0] == b || t[1] == b || t[2] == b;
         if (!clear || (has_a && has_b))
             return; // done, or dies with the edge
-        const auto check_faces_at = [&](int32_t w) {
-            mesh.for_each_outgoing(w, [&](int32_t g) {
-                const Triangle &u = mesh.tri[TriMesh::face(g)];
-                for (int32_t x : t)
-                    for (int32_t y : u)
-                        if (same(x) == same(y))
-                            return; // shares a vertex (or is f itself)
-                if (triangles_intersect(corner(t[0]), corner(t[1]), corner(t[2]), corner(u[0]), corner(u[1]),
-                                        corner(u[2])))
-                    clear = false;
-            });
-        };
-        mesh.for_each_neighbour(a, [&](int32_t w, int32_t) { check_faces_at(w); });
-        mesh.for_each_neighbour(b, [&](int32_t w, int32_t) { check_faces_at(w); });
+        const Vec3 p[3] = {corner(t[0]), corner(t[1]), corner(t[2])};
+        for (int32_t e : nearby) {
+            const Triangle &u = mesh.tri[e];
+            bool shares = false; // a vertex with f (or is f itself)
+            for (int32_t x : t)
+                for (int32_t y : u)
+                    shares = shares || same(x) == same(y);
+            if (!shares && triangles_intersect(p[0], p[1], p[2], corner(u[0]), corner(u[1]), corner(u[2]))) {
+                clear = false;
+                return;
+            }
+        }
     });
     return clear;
 }
@@ -215,7 +222,7 @@ int32_t contraction_pass(TriMesh &mesh, SurfaceAnalysis &analysis, const RepairS
     if (guard)
         guard->index_faces(mesh, mesh.pos);
     int32_t contractions = 0;
-    std::vector<int32_t> ridge_neighbours;
+    std::vector<int32_t> ridge_neighbours, nearby;
     for (const Candidate &c : candidates) {
         if (is_dead_vertex(mesh, c.a) || is_dead_vertex(mesh, c.b))
             continue;
@@ -226,7 +233,7 @@ int32_t contraction_pass(TriMesh &mesh, SurfaceAnalysis &analysis, const RepairS
         int8_t merged_rank;
         if (h < 0 || !wants_contraction(mesh, analysis, h, settings) || !collapse_keeps_manifold(mesh, h) ||
             !merged_position(mesh, h, features, merged, merged_rank) || !faces_survive(mesh, h, merged) ||
-            !stays_clear_of_neighbours(mesh, h, merged) || (guard && merge_crosses(mesh, h, merged, *guard)))
+            !stays_clear_of_neighbours(mesh, h, merged, nearby) || (guard && merge_crosses(mesh, h, merged, *guard)))
             continue;
         const Stencil stencil = stencil_over(mesh, merged, [&](auto &&visit) { for_each_face_around(mesh, h, visit); });
         const int32_t gone = mesh.tail(h), keep = mesh.head(h);

@@ -98,9 +98,10 @@ bool triangles_intersect(const Vec3 &a0, const Vec3 &a1, const Vec3 &a2, const V
                          const Vec3 &b2)
 {
     const Vec3 a[3] = {a0, a1, a2}, b[3] = {b0, b1, b2};
-    double size = 0;
+    double size2 = 0;
     for (int k = 0; k < 3; ++k)
-        size = std::max({size, (a[k] - a[(k + 1) % 3]).norm(), (b[k] - b[(k + 1) % 3]).norm()});
+        size2 = std::max({size2, (a[k] - a[(k + 1) % 3]).squaredNorm(), (b[k] - b[(k + 1) % 3]).squaredNorm()});
+    const double size = std::sqrt(size2); // the longest edge
     const Vec3 na = (a1 - a0).cross(a2 - a0), nb = (b1 - b0).cross(b2 - b0);
     double db[3], da[3];
     plane_distances(b, a0, na, 1e-12 * na.norm() * size, db);
