@@ -1,24 +1,30 @@
 #include "mesh/locality_order.hpp"
 
+#include "mesh/parallel.hpp"
+
 #include <algorithm>
 #include <cstdint>
-#include <numeric>
+#include <utility>
 
 namespace sfa {
 namespace {
 
 constexpr int bits_per_axis = 21; // 63 bits in all
 
-// The bits of x spread to every third place.
+// The low 21 bits of x spread to every third place.
 uint64_t spread_bits(uint64_t x)
 {
-    uint64_t spread = 0;
-    for (int bit = 0; bit < bits_per_axis; ++bit)
-        spread |= ((x >> bit) & 1u) << (3 * bit);
-    return spread;
+    x &= (uint64_t{1} << bits_per_axis) - 1;
+    x = (x | x << 32) & 0x001f00000000ffffu;
+    x = (x | x << 16) & 0x001f0000ff0000ffu;
+    x = (x | x << 8) & 0x100f00f00f00f00fu;
+    x = (x | x << 4) & 0x10c30c30c30c30c3u;
+    x = (x | x << 2) & 0x1249249249249249u;
+    return x;
 }
 
-std::vector<uint64_t> morton_keys(const std::vector<Vec3> &pos)
+// The vertices in the order of their Morton keys, ties by number.
+std::vector<int32_t> morton_order(const std::vector<Vec3> &pos)
 {
     Vec3 low = Vec3::Constant(0), high = Vec3::Constant(0);
     if (!pos.empty())
@@ -29,21 +35,19 @@ std::vector<uint64_t> morton_keys(const std::vector<Vec3> &pos)
     }
     const double cells = static_cast<double>((uint64_t{1} << bits_per_axis) - 1);
     const Vec3 scale = (high - low).cwiseMax(1e-300).cwiseInverse() * cells;
-    std::vector<uint64_t> keys(pos.size());
-    for (size_t v = 0; v < pos.size(); ++v) {
+    const int32_t n = static_cast<int32_t>(pos.size());
+    std::vector<std::pair<uint64_t, int32_t>> keyed(n);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t v = 0; v < n; ++v) {
         const Vec3 cell = (pos[v] - low).cwiseProduct(scale);
-        keys[v] = spread_bits(static_cast<uint64_t>(cell.x())) | spread_bits(static_cast<uint64_t>(cell.y())) << 1 |
-                  spread_bits(static_cast<uint64_t>(cell.z())) << 2;
+        keyed[v] = {spread_bits(static_cast<uint64_t>(cell.x())) | spread_bits(static_cast<uint64_t>(cell.y())) << 1 |
+                        spread_bits(static_cast<uint64_t>(cell.z())) << 2,
+                    v};
     }
-    return keys;
-}
-
-// The order of 0..n-1 by key, ties by index.
-std::vector<int32_t> sorted_by(const std::vector<uint64_t> &key)
-{
-    std::vector<int32_t> order(key.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) { return key[a] < key[b] || (key[a] == key[b] && a < b); });
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<int32_t> order(n);
+    for (int32_t k = 0; k < n; ++k)
+        order[k] = keyed[k].second;
     return order;
 }
 
@@ -59,7 +63,7 @@ std::vector<int32_t> inverse(const std::vector<int32_t> &order)
 
 std::vector<int32_t> order_for_locality(TriMesh &mesh)
 {
-    const std::vector<int32_t> vertex_map = inverse(sorted_by(morton_keys(mesh.pos)));
+    const std::vector<int32_t> vertex_map = inverse(morton_order(mesh.pos));
     // Triangles by their smallest new vertex, ties by old number: a counting sort.
     std::vector<int32_t> first_vertex(mesh.tri.size()), start(mesh.pos.size() + 1, 0);
     for (size_t t = 0; t < mesh.tri.size(); ++t) {
@@ -78,12 +82,14 @@ std::vector<int32_t> order_for_locality(TriMesh &mesh)
     TriMesh out;
     out.pos.resize(mesh.pos.size());
     out.v2h.resize(mesh.v2h.size());
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
         out.pos[vertex_map[v]] = mesh.pos[v];
         out.v2h[vertex_map[v]] = new_halfedge(mesh.v2h[v]);
     }
     out.tri.resize(mesh.tri.size());
     out.opp.resize(mesh.opp.size());
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t t = 0; t < mesh.num_triangles(); ++t) {
         const int32_t old = triangle_order[t];
         const Triangle &c = mesh.tri[old];

@@ -1,6 +1,7 @@
 #include "motion/explicit_step.hpp"
 
 #include "mesh/error.hpp"
+#include "mesh/parallel.hpp"
 #include "motion/fold_time.hpp"
 
 #include <algorithm>
@@ -10,8 +11,10 @@ namespace sfa {
 
 std::vector<Vec3> displaced(const std::vector<Vec3> &pos, const std::vector<Vec3> &velocity, double dt)
 {
-    std::vector<Vec3> out(pos.size());
-    for (size_t v = 0; v < pos.size(); ++v)
+    const int32_t n = static_cast<int32_t>(pos.size());
+    std::vector<Vec3> out(n);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t v = 0; v < n; ++v)
         out[v] = pos[v] + dt * velocity[v];
     return out;
 }

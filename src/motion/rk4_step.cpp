@@ -1,6 +1,7 @@
 #include "motion/rk4_step.hpp"
 
 #include "mesh/error.hpp"
+#include "mesh/parallel.hpp"
 #include "motion/fold_time.hpp"
 
 #include <algorithm>
@@ -14,16 +15,21 @@ static_assert(sizeof(Vec3) == 3 * sizeof(double), "positions are passed to the h
 
 std::vector<Vec3> evaluate(const VelocityField &field, const std::vector<Vec3> &points, double t)
 {
-    std::vector<Vec3> velocity(points.size(), Vec3::Zero());
-    field(static_cast<int32_t>(points.size()), points.data()->data(), t, velocity.data()->data());
-    for (size_t v = 0; v < velocity.size(); ++v) {
-        if (!velocity[v].allFinite()) {
-            char message[200];
-            std::snprintf(message, sizeof message,
-                          "the velocity callback gave vertex %zu a non-finite velocity (%g, %g, %g) at t = %g", v,
-                          velocity[v].x(), velocity[v].y(), velocity[v].z(), t);
-            throw Error(Status::numeric, message);
-        }
+    const int32_t n = static_cast<int32_t>(points.size());
+    std::vector<Vec3> velocity(n, Vec3::Zero());
+    field(n, points.data()->data(), t, velocity.data()->data());
+    int32_t first_bad = n;
+#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(min : first_bad)
+    for (int32_t v = 0; v < n; ++v)
+        if (!velocity[v].allFinite())
+            first_bad = std::min(first_bad, v);
+    if (first_bad < n) {
+        const Vec3 &bad = velocity[first_bad];
+        char message[200];
+        std::snprintf(message, sizeof message,
+                      "the velocity callback gave vertex %d a non-finite velocity (%g, %g, %g) at t = %g", first_bad,
+                      bad.x(), bad.y(), bad.z(), t);
+        throw Error(Status::numeric, message);
     }
     return velocity;
 }
@@ -35,8 +41,10 @@ std::vector<Vec3> rk4_velocity(const std::vector<Vec3> &pos, const VelocityField
     const std::vector<Vec3> k2 = evaluate(field, displaced(pos, k1, h / 2), t + h / 2);
     const std::vector<Vec3> k3 = evaluate(field, displaced(pos, k2, h / 2), t + h / 2);
     const std::vector<Vec3> k4 = evaluate(field, displaced(pos, k3, h), t + h);
-    std::vector<Vec3> mean(pos.size());
-    for (size_t v = 0; v < pos.size(); ++v)
+    const int32_t n = static_cast<int32_t>(pos.size());
+    std::vector<Vec3> mean(n);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t v = 0; v < n; ++v)
         mean[v] = (k1[v] + 2 * k2[v] + 2 * k3[v] + k4[v]) / 6;
     return mean;
 }
