@@ -8,6 +8,7 @@
 
 #include "mesh/tri_mesh.hpp"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -53,25 +54,33 @@ private:
     Cell cell_of(const Vec3 &p) const;
     template <class Fn>
     void for_each_cell(const Vec3 &lo, const Vec3 &hi, Fn &&fn) const;
+    size_t bucket_of(int64_t i, int64_t j, int64_t k) const;
 
-    // The entries of the faces, chained per bucket of their cell's key, in flat arrays:
-    // entering a face allocates nothing per cell (a map of vectors spent more on allocation
-    // than the queries did). An entry keeps only the face: its box is taken from the
-    // positions when asked, and the latest entry of a face covers its box as it is.
+    // A face in a cell, with its box and first cell as they were when it was entered: most
+    // candidates of a query are settled without reading the mesh. A bucket holds the cells
+    // whose keys hash to it; an entry of another cell in it only brings a candidate up
+    // again.
     struct Entry {
-        uint64_t key; // the cell
+        Vec3 lo, hi;
+        Cell first; // the cell of lo
         int32_t face;
-        int32_t next; // the bucket's next entry, or -1
+        int32_t next; // for refreshed entries: the bucket's next one, or -1
     };
-    size_t bucket_of(uint64_t key) const { return (key * 0x9E3779B97F4A7C15u) >> bucket_shift_; }
 
     std::vector<char> watched_;
     std::vector<int32_t> faces_;
-    double cell_size_ = 0;
+    std::vector<std::array<Vec3, 2>> boxes_; // of faces_, while they are indexed
+    double cell_size_ = 0, inverse_cell_size_ = 0;
     Vec3 origin_ = Vec3::Zero();
-    std::vector<int32_t> bucket_head_; // per bucket: its first entry, or -1
-    std::vector<Entry> entries_;
     int bucket_shift_ = 63;
+    // The faces indexed together, bucket by bucket (a counting sort): a query reads one
+    // contiguous run per cell. Bucket b's entries are entries_[bucket_start_[b]] up to
+    // entries_[bucket_start_[b + 1] - 1].
+    std::vector<int32_t> bucket_start_;
+    std::vector<Entry> entries_;
+    // The faces refreshed since, chained per bucket from refreshed_head_.
+    std::vector<int32_t> refreshed_head_;
+    std::vector<Entry> refreshed_;
 };
 
 } // namespace sfa
