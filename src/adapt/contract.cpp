@@ -196,6 +196,78 @@ struct Candidate {
     int32_t a, b;
 };
 
+// Every check of contracting h but the crossing guard's; the merged vertex's position and
+// rank if it passes. `nearby`: scratch for stays_clear_of_neighbours.
+bool contraction_allowed(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h,
+                         const RepairSettings &settings, const CarriedFeatures &features,
+                         std::vector<int32_t> &nearby, Vec3 &merged, int8_t &merged_rank)
+{
+    return wants_contraction(mesh, analysis, h, settings) && collapse_keeps_manifold(mesh, h) &&
+           merged_position(mesh, h, features, merged, merged_rank) && faces_survive(mesh, h, merged) &&
+           stays_clear_of_neighbours(mesh, h, merged, nearby);
+}
+
+// The edge between a and b, in either direction, or -1.
+int32_t edge_between(const TriMesh &mesh, int32_t a, int32_t b)
+{
+    const int32_t h = mesh.halfedge(a, b);
+    return h >= 0 ? h : mesh.halfedge(b, a);
+}
+
+// True if a vertex within two edges of a or b is marked.
+bool near_marked(const TriMesh &mesh, int32_t a, int32_t b, const std::vector<char> &marked)
+{
+    bool found = false;
+    for (int32_t end : {a, b})
+        if (!found && !marked[end])
+            mesh.for_each_neighbour(end, [&](int32_t w, int32_t) {
+                if (!found && !marked[w])
+                    mesh.for_each_neighbour(w, [&](int32_t x, int32_t) { found = found || marked[x]; });
+                found = found || marked[w];
+            });
+        else
+            found = true;
+    return found;
+}
+
+// The verdict of contraction_allowed on the mesh as the pass found it.
+struct Precheck {
+    Vec3 merged = Vec3::Zero();
+    int8_t merged_rank = 0;
+    bool allowed = false;
+};
+
+// contraction_allowed for every candidate, in parallel, on the mesh as it is. The verdict
+// reads the positions within two edges of the candidate's ends and the fans and features
+// within one, so it stands in the serial pass for every candidate whose ends are more than
+// two edges from any vertex an earlier contraction moved or gave a new fan; the
+// candidates near one are judged again in turn.
+std::vector<Precheck> prechecked(const TriMesh &mesh, const SurfaceAnalysis &analysis, const RepairSettings &settings,
+                                 const CarriedFeatures &features, const std::vector<Candidate> &candidates)
+{
+    // stays_clear_of_neighbours lists at most every fan of the neighbours of both ends:
+    // each thread's list is allocated for that before the loop, so that none grows in it.
+    int32_t most_neighbours = 0;
+#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(max : most_neighbours)
+    for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
+        int32_t count = 0;
+        mesh.for_each_neighbour(v, [&](int32_t, int32_t) { ++count; });
+        most_neighbours = std::max(most_neighbours, count);
+    }
+    std::vector<std::vector<int32_t>> nearby(loop_threads());
+    for (std::vector<int32_t> &list : nearby)
+        list.reserve(2 * static_cast<size_t>(most_neighbours) * most_neighbours);
+    const int32_t count = static_cast<int32_t>(candidates.size());
+    std::vector<Precheck> out(count);
+#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 64)
+    for (int32_t k = 0; k < count; ++k) {
+        const int32_t h = edge_between(mesh, candidates[k].a, candidates[k].b);
+        out[k].allowed = h >= 0 && contraction_allowed(mesh, analysis, h, settings, features, nearby[thread_index()],
+                                                       out[k].merged, out[k].merged_rank);
+    }
+    return out;
+}
+
 } // namespace
 
 int32_t contraction_pass(TriMesh &mesh, SurfaceAnalysis &analysis, const RepairSettings &settings,
@@ -219,21 +291,24 @@ int32_t contraction_pass(TriMesh &mesh, SurfaceAnalysis &analysis, const RepairS
         return std::tie(x.length, x.a, x.b) < std::tie(y.length, y.a, y.b);
     });
 
+    const std::vector<Precheck> precheck = prechecked(mesh, analysis, settings, features, candidates);
     if (guard)
         guard->index_faces(mesh, mesh.pos);
     int32_t contractions = 0;
     std::vector<int32_t> ridge_neighbours, nearby;
-    for (const Candidate &c : candidates) {
+    std::vector<char> moved(mesh.pos.size(), 0); // the merged vertices of the pass and their neighbours
+    for (size_t k = 0; k < candidates.size(); ++k) {
+        const Candidate &c = candidates[k];
         if (is_dead_vertex(mesh, c.a) || is_dead_vertex(mesh, c.b))
             continue;
-        int32_t h = mesh.halfedge(c.a, c.b);
-        if (h < 0)
-            h = mesh.halfedge(c.b, c.a);
-        Vec3 merged;
-        int8_t merged_rank;
-        if (h < 0 || !wants_contraction(mesh, analysis, h, settings) || !collapse_keeps_manifold(mesh, h) ||
-            !merged_position(mesh, h, features, merged, merged_rank) || !faces_survive(mesh, h, merged) ||
-            !stays_clear_of_neighbours(mesh, h, merged, nearby) || (guard && merge_crosses(mesh, h, merged, *guard)))
+        const int32_t h = edge_between(mesh, c.a, c.b);
+        Vec3 merged = precheck[k].merged;
+        int8_t merged_rank = precheck[k].merged_rank;
+        const bool allowed = near_marked(mesh, c.a, c.b, moved)
+                                 ? h >= 0 && contraction_allowed(mesh, analysis, h, settings, features, nearby, merged,
+                                                                 merged_rank)
+                                 : precheck[k].allowed;
+        if (!allowed || (guard && merge_crosses(mesh, h, merged, *guard)))
             continue;
         const Stencil stencil = stencil_over(mesh, merged, [&](auto &&visit) { for_each_face_around(mesh, h, visit); });
         const int32_t gone = mesh.tail(h), keep = mesh.head(h);
@@ -244,8 +319,8 @@ int32_t contraction_pass(TriMesh &mesh, SurfaceAnalysis &analysis, const RepairS
         });
         collapse_edge(mesh, h, merged);
         // The merged vertex moved: every fan it is in changed.
-        changed[keep] = 1;
-        mesh.for_each_neighbour(keep, [&](int32_t w, int32_t) { changed[w] = 1; });
+        changed[keep] = moved[keep] = 1;
+        mesh.for_each_neighbour(keep, [&](int32_t w, int32_t) { changed[w] = moved[w] = 1; });
         if (guard)
             mesh.for_each_outgoing(keep, [&](int32_t g) { guard->refresh(mesh, mesh.pos, TriMesh::face(g)); });
         set_interpolated(fields, keep, stencil);

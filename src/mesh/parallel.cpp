@@ -18,6 +18,15 @@ int loop_threads()
 #endif
 }
 
+int thread_index()
+{
+#ifdef _OPENMP
+    return omp_get_thread_num();
+#else
+    return 0;
+#endif
+}
+
 ThreadLimit::ThreadLimit(int threads) : previous_(thread_limit) { thread_limit = threads; }
 
 ThreadLimit::~ThreadLimit() { thread_limit = previous_; }

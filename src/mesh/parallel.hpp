@@ -15,6 +15,11 @@ namespace sfa {
 // without OpenMP.
 int loop_threads();
 
+// The number of the calling thread in the current parallel loop, below loop_threads(); 0
+// outside one and without OpenMP. It picks a thread's scratch space, allocated before the
+// loop.
+int thread_index();
+
 // Sets this thread's limit for its lifetime (0: OpenMP's default), and restores the
 // previous one after. The C boundary sets it from SFA_PARAM_THREADS around every call, so
 // concurrent handles in different threads each keep their own.
