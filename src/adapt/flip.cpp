@@ -146,18 +146,26 @@ int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const Flip
     if (guard)
         guard->index_faces(mesh, mesh.pos);
     int32_t flips = 0;
+    // The corners of the quads flipped so far. A candidate's verdict reads its quad's
+    // corners (positions, quadrics, fans): while none of them is marked, it stands.
+    std::vector<char> flipped(mesh.pos.size(), 0);
     for (const Candidate &candidate : candidates) {
-        // Earlier flips may have removed this edge or changed its quad: judge it again.
         const int32_t h = mesh.halfedge(candidate.a, candidate.b);
-        if (h < 0 || !may_flip(h) || !judge(mesh, h, quadric, settings, cos_max_dihedral).flip)
+        if (h < 0)
             continue;
         const FlipQuad quad = flip_quad(mesh, h);
+        // Earlier flips may have changed this edge's quad: then judge it again.
+        if ((flipped[quad.a] || flipped[quad.b] || flipped[quad.p] || flipped[quad.q]) &&
+            (!may_flip(h) || !judge(mesh, h, quadric, settings, cos_max_dihedral).flip))
+            continue;
         if (guard && flip_crosses(mesh, quad, *guard))
             continue;
         const int32_t t0 = TriMesh::face(h), t1 = TriMesh::face(mesh.opp[h]);
-        if (changed)
-            for (int32_t v : {quad.a, quad.b, quad.p, quad.q})
+        for (int32_t v : {quad.a, quad.b, quad.p, quad.q}) {
+            flipped[v] = 1;
+            if (changed)
                 (*changed)[v] = 1;
+        }
         update_quadrics(quadric, mesh, t0, t1, -1);
         const FlipMoves moves = flip_edge(mesh, h);
         update_quadrics(quadric, mesh, t0, t1, +1);
