@@ -13,18 +13,24 @@ Vec3 onto_fitted_surface(const TriMesh &mesh, int32_t v, const VertexMetric &fra
     using Matrix5 = Eigen::Matrix<double, 5, 5>;
     Matrix5 normal_matrix = Matrix5::Zero();
     Vector5 right_side = Vector5::Zero();
+    // The neighbours' offsets are read once (a fan of more than `kept` twice): the smoothing
+    // sweeps fit every vertex.
+    constexpr int kept = 32;
+    Vec3 offset[kept];
     double scale2 = 0;
     int count = 0;
     mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
-        scale2 += (mesh.pos[w] - p).squaredNorm();
+        const Vec3 d = mesh.pos[w] - p;
+        scale2 += d.squaredNorm();
+        if (count < kept)
+            offset[count] = d;
         ++count;
     });
     if (count < 5 || scale2 == 0)
         return target;
     scale2 /= count;
     const double scale = std::sqrt(scale2);
-    mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
-        const Vec3 d = mesh.pos[w] - p;
+    const auto add = [&](const Vec3 &d) {
         const double u = d.dot(frame.major), s = d.dot(frame.minor), h = d.dot(frame.normal);
         const double basis[5] = {u * u / scale2, u * s / scale2, s * s / scale2, u / scale, s / scale};
         for (int i = 0; i < 5; ++i) {
@@ -32,7 +38,12 @@ Vec3 onto_fitted_surface(const TriMesh &mesh, int32_t v, const VertexMetric &fra
                 normal_matrix(i, j) += basis[i] * basis[j];
             right_side[i] += basis[i] * h;
         }
-    });
+    };
+    if (count <= kept)
+        for (int k = 0; k < count; ++k)
+            add(offset[k]);
+    else
+        mesh.for_each_neighbour(v, [&](int32_t w, int32_t) { add(mesh.pos[w] - p); });
     const Eigen::LLT<Matrix5> solver(normal_matrix);
     // Neighbours on two lines through v (or fewer directions) cannot fix three
     // coefficients, and five neighbours nearly so make a fit that amplifies every wiggle:
