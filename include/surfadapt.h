@@ -243,7 +243,10 @@ const char *sfa_status_string(int status);
 /* ------------------------------------------------------ lifecycle, errors */
 
 /**
- * Creates an empty surface with default parameters.
+ * Creates an empty surface with default parameters. Besides the mesh and its fields, a
+ * surface keeps the working memory of its analyses from one sfa_smooth() or sfa_adapt()
+ * call to the next (about 270 bytes per vertex), so that a flow does not allocate it on
+ * every step; sfa_destroy() frees it.
  * @param out receives the new handle (owned by the caller, free with sfa_destroy());
  *            set to NULL on failure.
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (`out` is NULL), ::SFA_ERR_MEMORY.
