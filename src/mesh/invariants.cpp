@@ -2,28 +2,10 @@
 
 #include "mesh/parallel.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <vector>
 
 namespace sfa {
-
-namespace {
-
-// The first i in [0, n) for which bad(i) holds, or n. In parallel: the whole check runs
-// after every adaptation.
-template <class Bad>
-int32_t first_where(int32_t n, Bad &&bad)
-{
-    int32_t first = n;
-#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(min : first)
-    for (int32_t i = 0; i < n; ++i)
-        if (bad(i))
-            first = std::min(first, i);
-    return first;
-}
-
-} // namespace
 
 std::string invariant_violation(const TriMesh &mesh)
 {

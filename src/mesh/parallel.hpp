@@ -34,6 +34,19 @@ private:
     int previous_;
 };
 
+// The first i in [0, count) for which bad(i) holds, or count: a min-reduction, the same
+// for any number of threads. bad must not throw.
+template <class Bad>
+int32_t first_where(int32_t count, Bad &&bad)
+{
+    int32_t first = count;
+#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(min : first)
+    for (int32_t i = 0; i < count; ++i)
+        if (bad(i) && i < first)
+            first = i;
+    return first;
+}
+
 // The sum of term(i) for i in [0, count): fixed blocks summed in order, in parallel, and
 // then the block sums in order, so that the rounding does not depend on the number of
 // threads. T is double or a fixed-size Eigen vector; term must not throw.

@@ -28,16 +28,12 @@ double first_positive_root(double c0, double c1, double c2)
 
 int32_t first_folded_triangle(const TriMesh &mesh, const std::vector<Vec3> &moved)
 {
-    // A min-reduction: the same first triangle for any number of threads.
-    int32_t first = mesh.num_triangles();
-#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(min : first)
-    for (int32_t t = 0; t < mesh.num_triangles(); ++t) {
+    const int32_t first = first_where(mesh.num_triangles(), [&](int32_t t) {
         const Triangle &c = mesh.tri[t];
         const Vec3 before = (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]);
         const Vec3 after = (moved[c[1]] - moved[c[0]]).cross(moved[c[2]] - moved[c[0]]);
-        if (!(before.dot(after) > 0))
-            first = std::min(first, t);
-    }
+        return !(before.dot(after) > 0);
+    });
     return first < mesh.num_triangles() ? first : -1;
 }
 

@@ -18,11 +18,7 @@ std::vector<Vec3> evaluate(const VelocityField &field, const std::vector<Vec3> &
     const int32_t n = static_cast<int32_t>(points.size());
     std::vector<Vec3> velocity(n, Vec3::Zero());
     field(n, points.data()->data(), t, velocity.data()->data());
-    int32_t first_bad = n;
-#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(min : first_bad)
-    for (int32_t v = 0; v < n; ++v)
-        if (!velocity[v].allFinite())
-            first_bad = std::min(first_bad, v);
+    const int32_t first_bad = first_where(n, [&](int32_t v) { return !velocity[v].allFinite(); });
     if (first_bad < n) {
         const Vec3 &bad = velocity[first_bad];
         char message[200];
