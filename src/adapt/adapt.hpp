@@ -2,25 +2,13 @@
 // (splitting, contraction), iterated.
 #pragma once
 
-#include "adapt/flip.hpp"
 #include "adapt/phase_times.hpp"
-#include "adapt/repair_settings.hpp"
+#include "adapt/settings.hpp"
 #include "fields/vertex_fields.hpp"
 
 #include <vector>
 
 namespace sfa {
-
-struct AdaptSettings {
-    FeatureThresholds features;
-    MetricBounds metric;
-    double flip_max_dihedral; // radians
-    RepairSettings repair;
-    int max_passes;       // iterations at most
-    int smoothing_sweeps; // per iteration
-    double denoise;       // weight in every sweep (smoothing_sweep)
-    bool crossing_guard;  // no step passes the surface through itself (crossing_guard.hpp)
-};
 
 struct AdaptCounts {
     int32_t passes = 0, splits = 0, contractions = 0, flips = 0;
@@ -29,17 +17,18 @@ struct AdaptCounts {
 
 // Features are detected once, then carried through the call (carried_features.hpp). Each
 // pass: split, contract, flip, then smooth, every step on the geometry as it then is
-// (analysed anew where the step before changed it); until a pass changes the connectivity of at most 1 in 100
-// vertices or max_passes were made. A closed surface then gets its enclosed volume back
-// (restore_enclosed_volume), and if edges were split or contracted, the mesh is renumbered
-// for locality (locality_order.hpp). The fields (one value set per vertex) follow every
-// step. The mesh stays dense and valid. The seconds of each phase are counted in the result.
-// With the crossing guard, no step carries the surface through itself where it is thinner
-// than an edge (crossing_guard.hpp): the vertices near a facing sheet are found at the
-// start and carried through the call; on return `near_sheet` holds them, numbered as the
-// returned mesh (empty without the guard). The analyses are made in `workspace`, whose
-// contents on entry do not matter and on return mean nothing; keeping it from call to call
-// keeps its memory.
+// (analysed anew where the step before changed it); until a pass changes the connectivity
+// of at most 1 in 100 vertices or max_passes were made. A closed surface then gets its
+// enclosed volume back (restore_enclosed_volume), and if edges were split or contracted,
+// the mesh is renumbered for locality (locality_order.hpp). Every change goes through one
+// edit (mesh/mesh_edit.hpp), which carries the fields (one value set per vertex) and
+// everything else that lives on the mesh. The mesh stays dense and valid. The seconds of
+// each phase are counted in the result. With the crossing guard, no step carries the
+// surface through itself where it is thinner than an edge (crossing_guard.hpp): the
+// vertices near a facing sheet are found at the start and carried through the call; on
+// return `near_sheet` holds them, numbered as the returned mesh (empty without the guard).
+// The analyses are made in `workspace`, whose contents on entry do not matter and on
+// return mean nothing; keeping it from call to call keeps its memory.
 AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
                           std::vector<char> &near_sheet, SurfaceAnalysis &workspace);
 

@@ -1,54 +1,47 @@
-// The features of the surface as sfa_adapt found them, carried through its splits and
-// contractions (which renumber half-edges and vertices) rather than detected again after
-// every step: within one call a feature stays a feature. Otherwise refining a crease that
-// is just sharp enough (a coarse model's) halves its dihedral angles, and the next analysis
-// would lose it (spot lost 18 of its 30 corners that way). The next call detects afresh,
-// so that features of a moving surface can still appear and vanish.
+// The features of the surface as sfa_adapt found them, carried through its splits,
+// contractions and flips rather than detected again after every step: within one call a
+// feature stays a feature. Otherwise refining a crease that is just sharp enough (a coarse
+// model's) halves its dihedral angles, and the next analysis would lose it (spot lost 18 of
+// its 30 corners that way). The next call detects afresh, so that features of a moving
+// surface can still appear and vanish.
 #pragma once
 
 #include "geometry/features.hpp"
+#include "mesh/halfedge_flags.hpp"
 
-#include <array>
 #include <cstdint>
-#include <unordered_set>
 #include <vector>
 
 namespace sfa {
 
-// Ridge edges as vertex pairs.
-class RidgeSet {
+// How features are carried: a vertex made on a ridge or boundary edge is a ridge vertex
+// (else smooth); a merged vertex takes the higher rank of the two; ridge edges are
+// half-edge flags (halfedge_flags.hpp). No operation flips a ridge edge (flip.hpp).
+class CarriedFeatures : public EditListener {
 public:
-    explicit RidgeSet(const std::vector<std::array<int32_t, 2>> &edges);
-    bool contains(int32_t a, int32_t b) const { return keys_.count(key(a, b)) != 0; }
-    void add(int32_t a, int32_t b) { keys_.insert(key(a, b)); }
-    void remove(int32_t a, int32_t b) { keys_.erase(key(a, b)); }
-    // Every pair, smaller vertex first.
-    std::vector<std::array<int32_t, 2>> edges() const;
+    explicit CarriedFeatures(const Features &detected)
+        : rank_(detected.rank), ridges_(detected.ridge_halfedge) {}
 
-private:
-    static uint64_t key(int32_t a, int32_t b)
-    {
-        const uint32_t lo = static_cast<uint32_t>(a < b ? a : b), hi = static_cast<uint32_t>(a < b ? b : a);
-        return uint64_t(lo) << 32 | hi;
-    }
-    std::unordered_set<uint64_t> keys_;
-};
-
-struct CarriedFeatures {
-    explicit CarriedFeatures(const Features &detected);
-
-    std::vector<int8_t> rank; // per vertex
-    RidgeSet ridges;
+    int8_t rank(int32_t v) const { return rank_[v]; }
+    const std::vector<int8_t> &ranks() const { return rank_; }
+    // True if h's edge is a ridge edge.
+    bool is_ridge(int32_t h) const { return ridges_[h]; }
 
     // The position of v's ridge neighbour other than `not_this`, or nullptr if v is not a
     // ridge vertex (rank 1: exactly two ridge neighbours) or has none.
     const Vec3 *next_along(const TriMesh &mesh, int32_t v, int32_t not_this) const;
 
-    // After compaction: vertex v is vertex_map[v] now, or gone if that is -1.
-    void renumber(const std::vector<int32_t> &vertex_map);
-
     // As the analysis presents features (ranks, ridge half-edge flags, sorted ridge edges).
     Features as_features(const TriMesh &mesh) const;
+
+    void split(const TriMesh &mesh, const SplitChange &change) override;
+    void collapse(const TriMesh &mesh, const CollapseChange &change) override;
+    void flip(const TriMesh &mesh, const FlipChange &change) override { ridges_.flip(mesh, change); }
+    void renumber(const Renumbering &renumbering) override;
+
+private:
+    std::vector<int8_t> rank_; // per vertex: 0 smooth, 1 ridge, 2 corner
+    HalfedgeFlags ridges_;
 };
 
 } // namespace sfa

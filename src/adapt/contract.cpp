@@ -1,18 +1,12 @@
 #include "adapt/contract.hpp"
 
-#include "fields/transfer.hpp"
 #include "geometry/circle.hpp"
-#include "geometry/crossing_guard.hpp"
 #include "geometry/edge_neighbourhood.hpp"
 #include "geometry/quadric_error.hpp"
 #include "geometry/self_intersection.hpp"
-#include "mesh/compact.hpp"
-#include "mesh/edge_collapse.hpp"
-#include "mesh/parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 namespace sfa {
 namespace {
@@ -61,26 +55,13 @@ bool wants_contraction(const TriMesh &mesh, const SurfaceAnalysis &analysis, int
     return false;
 }
 
-// Every face around either end of h, the dying ones included.
-template <class Fn>
-void for_each_face_around(const TriMesh &mesh, int32_t h, Fn &&fn)
-{
-    mesh.for_each_outgoing(mesh.tail(h), [&](int32_t g) { fn(TriMesh::face(g)); });
-    mesh.for_each_outgoing(mesh.head(h), [&](int32_t g) {
-        const int32_t f = TriMesh::face(g);
-        const Triangle &t = mesh.tri[f];
-        if (t[0] != mesh.tail(h) && t[1] != mesh.tail(h) && t[2] != mesh.tail(h))
-            fn(f); // not seen from the tail already
-    });
-}
-
 // True if moving both ends of h to `merged` keeps every surviving face's orientation
 // (turned by at most 60 degrees) and shape (not nearly flat).
 bool faces_survive(const TriMesh &mesh, int32_t h, const Vec3 &merged)
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
     bool ok = true;
-    for_each_face_around(mesh, h, [&](int32_t f) {
+    mesh.for_each_face_around_edge(h, [&](int32_t f) {
         const Triangle &t = mesh.tri[f];
         const bool has_a = t[0] == a || t[1] == a || t[2] == a, has_b = t[0] == b || t[1] == b || t[2] == b;
         if (has_a && has_b)
@@ -118,7 +99,7 @@ bool stays_clear_of_neighbours(const TriMesh &mesh, int32_t h, const Vec3 &merge
     std::sort(nearby.begin(), nearby.end());
     nearby.erase(std::unique(nearby.begin(), nearby.end()), nearby.end());
     bool clear = true;
-    for_each_face_around(mesh, h, [&](int32_t f) {
+    mesh.for_each_face_around_edge(h, [&](int32_t f) {
         const Triangle &t = mesh.tri[f];
         const bool has_a = t[0] == a || t[1] == a || t[2] == a, has_b = t[0] == b || t[1] == b || t[2] == b;
         if (!clear || (has_a && has_b))
@@ -145,7 +126,7 @@ bool merge_crosses(const TriMesh &mesh, int32_t h, const Vec3 &merged, const Cro
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
     bool crosses = false;
-    for_each_face_around(mesh, h, [&](int32_t f) {
+    mesh.for_each_face_around_edge(h, [&](int32_t f) {
         Triangle t = mesh.tri[f];
         const bool has_a = t[0] == a || t[1] == a || t[2] == a, has_b = t[0] == b || t[1] == b || t[2] == b;
         if (crosses || (has_a && has_b) || !guard.watches_any(t))
@@ -162,15 +143,15 @@ bool merge_crosses(const TriMesh &mesh, int32_t h, const Vec3 &merged, const Cro
 }
 
 // Where the merged vertex goes (§4.2), or false if the contraction would spoil a feature.
-bool merged_position(const TriMesh &mesh, int32_t h, const CarriedFeatures &features, Vec3 &merged, int8_t &merged_rank)
+// (The merged vertex takes the higher of the two ranks: carried_features.hpp.)
+bool merged_position(const TriMesh &mesh, int32_t h, const CarriedFeatures &features, Vec3 &merged)
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
-    const int8_t ra = features.rank[a], rb = features.rank[b];
+    const int8_t ra = features.rank(a), rb = features.rank(b);
     if (ra == 2 && rb == 2)
         return false; // a corner would disappear
-    if (ra > 0 && rb > 0 && !features.ridges.contains(a, b))
+    if (ra > 0 && rb > 0 && !features.is_ridge(h))
         return false; // two ridge curves (or a curve and a corner) would merge
-    merged_rank = std::max(ra, rb);
     if (ra != rb) {
         merged = mesh.pos[ra > rb ? a : b]; // the feature vertex stays where it is
         return true;
@@ -181,29 +162,24 @@ bool merged_position(const TriMesh &mesh, int32_t h, const CarriedFeatures &feat
     }
     merged = (mesh.pos[a] + mesh.pos[b]) / 2;
     Vec3 normal = Vec3::Zero();
-    for_each_face_around(mesh, h, [&](int32_t f) {
+    mesh.for_each_face_around_edge(h, [&](int32_t f) {
         const Triangle &t = mesh.tri[f];
         normal += (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]);
     });
     merged = quadric_error_minimum_along(
-        mesh, [&](auto &&visit) { for_each_face_around(mesh, h, visit); }, merged, normal.normalized(),
+        mesh, [&](auto &&visit) { mesh.for_each_face_around_edge(h, visit); }, merged, normal.normalized(),
         max_shift_ratio * (mesh.pos[b] - mesh.pos[a]).norm());
     return true;
 }
 
-struct Candidate {
-    double length;
-    int32_t a, b;
-};
-
-// Every check of contracting h but the crossing guard's; the merged vertex's position and
-// rank if it passes. `nearby`: scratch for stays_clear_of_neighbours.
+// Every check of contracting h but the crossing guard's; the merged vertex's position if
+// it passes. `nearby`: scratch for stays_clear_of_neighbours.
 bool contraction_allowed(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h,
                          const RepairSettings &settings, const CarriedFeatures &features,
-                         std::vector<int32_t> &nearby, Vec3 &merged, int8_t &merged_rank)
+                         std::vector<int32_t> &nearby, Vec3 &merged)
 {
     return wants_contraction(mesh, analysis, h, settings) && collapse_keeps_manifold(mesh, h) &&
-           merged_position(mesh, h, features, merged, merged_rank) && faces_survive(mesh, h, merged) &&
+           merged_position(mesh, h, features, merged) && faces_survive(mesh, h, merged) &&
            stays_clear_of_neighbours(mesh, h, merged, nearby);
 }
 
@@ -230,119 +206,78 @@ bool near_marked(const TriMesh &mesh, int32_t a, int32_t b, const std::vector<ch
     return found;
 }
 
-// The verdict of contraction_allowed on the mesh as the pass found it.
-struct Precheck {
-    Vec3 merged = Vec3::Zero();
-    int8_t merged_rank = 0;
-    bool allowed = false;
-};
+class Contraction {
+public:
+    struct Plan {
+        Vec3 merged = Vec3::Zero();
+    };
+    // The full check is costly (the faces around the ends' neighbours are tested for
+    // crossings): made for every candidate in parallel first. It reads the positions within
+    // two edges of the candidate's ends and the fans and features within one, so it stands
+    // in the serial phase for every candidate whose ends are more than two edges from any
+    // vertex an earlier contraction moved or gave a new fan.
+    static constexpr bool plans_ahead = true;
 
-// contraction_allowed for every candidate, in parallel, on the mesh as it is. The verdict
-// reads the positions within two edges of the candidate's ends and the fans and features
-// within one, so it stands in the serial pass for every candidate whose ends are more than
-// two edges from any vertex an earlier contraction moved or gave a new fan; the
-// candidates near one are judged again in turn.
-std::vector<Precheck> prechecked(const TriMesh &mesh, const SurfaceAnalysis &analysis, const RepairSettings &settings,
-                                 const CarriedFeatures &features, const std::vector<Candidate> &candidates)
-{
-    // stays_clear_of_neighbours lists at most every fan of the neighbours of both ends:
-    // each thread's list is allocated for that before the loop, so that none grows in it.
-    int32_t most_neighbours = 0;
+    Contraction(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings)
+        : mesh_(context.edit.mesh()), analysis_(analysis), settings_(settings), features_(context.features),
+          guard_(context.guard), nearby_(loop_threads())
+    {
+        // stays_clear_of_neighbours lists at most every fan of the neighbours of both ends:
+        // each thread's list is allocated for that here, so that none grows in a parallel loop.
+        int32_t most_neighbours = 0;
 #pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(max : most_neighbours)
-    for (int32_t v = 0; v < mesh.num_vertices(); ++v) {
-        int32_t count = 0;
-        mesh.for_each_neighbour(v, [&](int32_t, int32_t) { ++count; });
-        most_neighbours = std::max(most_neighbours, count);
+        for (int32_t v = 0; v < mesh_.num_vertices(); ++v) {
+            int32_t count = 0;
+            mesh_.for_each_neighbour(v, [&](int32_t, int32_t) { ++count; });
+            most_neighbours = std::max(most_neighbours, count);
+        }
+        for (std::vector<int32_t> &list : nearby_)
+            list.reserve(2 * static_cast<size_t>(most_neighbours) * most_neighbours);
     }
-    std::vector<std::vector<int32_t>> nearby(loop_threads());
-    for (std::vector<int32_t> &list : nearby)
-        list.reserve(2 * static_cast<size_t>(most_neighbours) * most_neighbours);
-    const int32_t count = static_cast<int32_t>(candidates.size());
-    std::vector<Precheck> out(count);
-#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 64)
-    for (int32_t k = 0; k < count; ++k) {
-        const int32_t h = edge_between(mesh, candidates[k].a, candidates[k].b);
-        out[k].allowed = h >= 0 && contraction_allowed(mesh, analysis, h, settings, features, nearby[thread_index()],
-                                                       out[k].merged, out[k].merged_rank);
+
+    bool wanted(int32_t h, double &order) const
+    {
+        if (!wants_contraction(mesh_, analysis_, h, settings_))
+            return false;
+        order = (mesh_.pos[mesh_.head(h)] - mesh_.pos[mesh_.tail(h)]).norm(); // shortest first (§4.2)
+        return true;
     }
-    return out;
-}
+    int32_t locate(int32_t a, int32_t b) const
+    {
+        return is_dead_vertex(mesh_, a) || is_dead_vertex(mesh_, b) ? -1 : edge_between(mesh_, a, b);
+    }
+    bool plan(int32_t h, Plan &plan) const
+    {
+        return contraction_allowed(mesh_, analysis_, h, settings_, features_, nearby_[thread_index()], plan.merged);
+    }
+    // Each contraction marks the merged vertex and its neighbours.
+    bool may_have_changed(int32_t h, const ChangedVertices &changed) const
+    {
+        return near_marked(mesh_, mesh_.tail(h), mesh_.head(h), changed.marks());
+    }
+    bool apply(MeshEdit &edit, int32_t h, const Plan &plan)
+    {
+        if (guard_ && merge_crosses(mesh_, h, plan.merged, *guard_))
+            return false;
+        edit.collapse(h, plan.merged);
+        return true;
+    }
+
+private:
+    const TriMesh &mesh_;
+    const SurfaceAnalysis &analysis_;
+    const RepairSettings &settings_;
+    const CarriedFeatures &features_;
+    const CrossingGuard *guard_;
+    mutable std::vector<std::vector<int32_t>> nearby_; // scratch per thread
+};
 
 } // namespace
 
-int32_t contraction_pass(TriMesh &mesh, SurfaceAnalysis &analysis, const RepairSettings &settings,
-                         CarriedFeatures &features, std::vector<VertexField> &fields, std::vector<char> &changed,
-                         CrossingGuard *guard)
+int32_t contraction_pass(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings)
 {
-    RidgeSet &ridges = features.ridges;
-    // Judging is independent per edge (in parallel); collecting is in half-edge order.
-    const int32_t halfedges = 3 * mesh.num_triangles();
-    std::vector<char> wanted(halfedges, 0);
-#pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t h = 0; h < halfedges; ++h)
-        if (mesh.opp[h] < 0 || mesh.opp[h] > h) // each edge once
-            wanted[h] = wants_contraction(mesh, analysis, h, settings);
-    std::vector<Candidate> candidates;
-    for (int32_t h = 0; h < halfedges; ++h)
-        if (wanted[h])
-            candidates.push_back({(mesh.pos[mesh.head(h)] - mesh.pos[mesh.tail(h)]).norm(), mesh.tail(h), mesh.head(h)});
-    // Shortest first (§4.2); ties in vertex order.
-    std::sort(candidates.begin(), candidates.end(), [](const Candidate &x, const Candidate &y) {
-        return std::tie(x.length, x.a, x.b) < std::tie(y.length, y.a, y.b);
-    });
-
-    const std::vector<Precheck> precheck = prechecked(mesh, analysis, settings, features, candidates);
-    if (guard)
-        guard->index_faces(mesh, mesh.pos);
-    int32_t contractions = 0;
-    std::vector<int32_t> ridge_neighbours, nearby;
-    std::vector<char> moved(mesh.pos.size(), 0); // the merged vertices of the pass and their neighbours
-    for (size_t k = 0; k < candidates.size(); ++k) {
-        const Candidate &c = candidates[k];
-        if (is_dead_vertex(mesh, c.a) || is_dead_vertex(mesh, c.b))
-            continue;
-        const int32_t h = edge_between(mesh, c.a, c.b);
-        Vec3 merged = precheck[k].merged;
-        int8_t merged_rank = precheck[k].merged_rank;
-        const bool allowed = near_marked(mesh, c.a, c.b, moved)
-                                 ? h >= 0 && contraction_allowed(mesh, analysis, h, settings, features, nearby, merged,
-                                                                 merged_rank)
-                                 : precheck[k].allowed;
-        if (!allowed || (guard && merge_crosses(mesh, h, merged, *guard)))
-            continue;
-        const Stencil stencil = stencil_over(mesh, merged, [&](auto &&visit) { for_each_face_around(mesh, h, visit); });
-        const int32_t gone = mesh.tail(h), keep = mesh.head(h);
-        ridge_neighbours.clear();
-        mesh.for_each_neighbour(gone, [&](int32_t w, int32_t) {
-            if (w != keep && ridges.contains(gone, w))
-                ridge_neighbours.push_back(w);
-        });
-        collapse_edge(mesh, h, merged);
-        // The merged vertex moved: every fan it is in changed.
-        changed[keep] = moved[keep] = 1;
-        mesh.for_each_neighbour(keep, [&](int32_t w, int32_t) { changed[w] = moved[w] = 1; });
-        if (guard)
-            mesh.for_each_outgoing(keep, [&](int32_t g) { guard->refresh(mesh, mesh.pos, TriMesh::face(g)); });
-        set_interpolated(fields, keep, stencil);
-        features.rank[keep] = merged_rank;
-        ridges.remove(gone, keep);
-        for (int32_t w : ridge_neighbours) {
-            ridges.remove(gone, w);
-            ridges.add(keep, w);
-        }
-        ++contractions;
-    }
-    const std::vector<int32_t> vertex_map = compact(mesh);
-    renumber_fields(fields, vertex_map);
-    features.renumber(vertex_map);
-    renumber_vertices(analysis, vertex_map);
-    if (guard)
-        guard->renumber(vertex_map);
-    for (size_t v = 0; v < vertex_map.size(); ++v)
-        if (vertex_map[v] >= 0) // new numbers never exceed old ones: in place, in order
-            changed[vertex_map[v]] = changed[v];
-    changed.resize(mesh.pos.size());
-    return contractions;
+    Contraction contraction(context, analysis, settings);
+    return run_edge_pass(context.edit, contraction);
 }
 
 } // namespace sfa

@@ -1,16 +1,12 @@
 #include "adapt/flip.hpp"
 
-#include "mesh/edge_flip.hpp"
-#include "mesh/parallel.hpp"
+#include "geometry/angles.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 namespace sfa {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 // A flip must gain at least this much opposite angle (radians, 0.06 degrees). Nearly
 // cocircular quads (the rectangles of CAD meshes, a square split either way) would
@@ -106,81 +102,75 @@ bool flip_crosses(const TriMesh &mesh, const FlipQuad &quad, const CrossingGuard
     return false;
 }
 
-struct Candidate {
-    double max_opposite_angle;
-    int32_t a, b;
+class Flipping {
+public:
+    struct Plan {};
+    // judge is the whole verdict; it reads the quad's corners (positions, quadrics, fans).
+    static constexpr bool plans_ahead = false;
+
+    Flipping(const PassContext &context, const SurfaceAnalysis &analysis, const FlipSettings &settings)
+        : mesh_(context.edit.mesh()), features_(context.features), guard_(context.guard), settings_(settings),
+          cos_max_dihedral_(std::cos(settings.max_dihedral)), quadric_(analysis.quadric)
+    {
+    }
+
+    bool wanted(int32_t h, double &order) const
+    {
+        if (mesh_.opp[h] < 0 || features_.is_ridge(h))
+            return false;
+        // The manifold test walks a fan through memory far apart: only for the few edges
+        // that would flip.
+        const Verdict verdict = judge(mesh_, h, quadric_, settings_, cos_max_dihedral_);
+        if (!verdict.flip || !flip_keeps_manifold(mesh_, h))
+            return false;
+        order = -verdict.max_opposite_angle; // largest first
+        return true;
+    }
+    int32_t locate(int32_t a, int32_t b) const { return mesh_.halfedge(a, b); }
+    bool plan(int32_t h, Plan &) const
+    {
+        return !features_.is_ridge(h) && flip_keeps_manifold(mesh_, h) &&
+               judge(mesh_, h, quadric_, settings_, cos_max_dihedral_).flip;
+    }
+    bool may_have_changed(int32_t h, const ChangedVertices &changed) const
+    {
+        const FlipQuad quad = flip_quad(mesh_, h);
+        return changed[quad.a] || changed[quad.b] || changed[quad.p] || changed[quad.q];
+    }
+    bool apply(MeshEdit &edit, int32_t h, const Plan &)
+    {
+        if (guard_ && flip_crosses(mesh_, flip_quad(mesh_, h), *guard_))
+            return false;
+        const int32_t t0 = TriMesh::face(h), t1 = TriMesh::face(mesh_.opp[h]);
+        update_quadrics(quadric_, mesh_, t0, t1, -1);
+        edit.flip(h);
+        update_quadrics(quadric_, mesh_, t0, t1, +1);
+        return true;
+    }
+
+private:
+    const TriMesh &mesh_;
+    const CarriedFeatures &features_;
+    const CrossingGuard *guard_;
+    const FlipSettings &settings_;
+    const double cos_max_dihedral_;
+    std::vector<Mat3> quadric_; // the analysis's, kept exact through the pass's flips
 };
 
 } // namespace
 
-int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const FlipSettings &settings,
-                      std::vector<char> *changed, CrossingGuard *guard)
+int32_t flipping_pass(const PassContext &context, const SurfaceAnalysis &analysis, const FlipSettings &settings)
 {
-    const double cos_max_dihedral = std::cos(settings.max_dihedral);
-    std::vector<Mat3> quadric = analysis.quadric;
-    std::vector<char> locked = analysis.features.ridge_halfedge;
-    const int32_t halfedges = 3 * mesh.num_triangles();
-    const auto may_flip = [&](int32_t h) { return !locked[h] && flip_keeps_manifold(mesh, h); };
+    Flipping flipping(context, analysis, settings);
+    return run_edge_pass(context.edit, flipping);
+}
 
-    // Judging is independent per edge (in parallel); collecting is in half-edge order. The
-    // manifold test walks a fan through memory far apart: only for the few edges that
-    // would flip.
-    std::vector<Verdict> verdict(halfedges, Verdict{false, 0});
-#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 1024)
-    for (int32_t h = 0; h < halfedges; ++h)
-        if (mesh.opp[h] > h && !locked[h]) { // each interior edge once, from its lower half
-            const Verdict v = judge(mesh, h, quadric, settings, cos_max_dihedral);
-            if (v.flip && flip_keeps_manifold(mesh, h))
-                verdict[h] = v;
-        }
-    std::vector<Candidate> candidates;
-    for (int32_t h = 0; h < halfedges; ++h)
-        if (verdict[h].flip)
-            candidates.push_back({verdict[h].max_opposite_angle, mesh.tail(h), mesh.head(h)});
-    // Greedy, largest opposite angle first; ties in vertex order, so the result is the same
-    // however the candidates were found.
-    std::sort(candidates.begin(), candidates.end(), [](const Candidate &x, const Candidate &y) {
-        return std::tie(y.max_opposite_angle, x.a, x.b) < std::tie(x.max_opposite_angle, y.a, y.b);
-    });
-
-    if (guard)
-        guard->index_faces(mesh, mesh.pos);
-    int32_t flips = 0;
-    // The corners of the quads flipped so far. A candidate's verdict reads its quad's
-    // corners (positions, quadrics, fans): while none of them is marked, it stands.
-    std::vector<char> flipped(mesh.pos.size(), 0);
-    for (const Candidate &candidate : candidates) {
-        const int32_t h = mesh.halfedge(candidate.a, candidate.b);
-        if (h < 0)
-            continue;
-        const FlipQuad quad = flip_quad(mesh, h);
-        // Earlier flips may have changed this edge's quad: then judge it again.
-        if ((flipped[quad.a] || flipped[quad.b] || flipped[quad.p] || flipped[quad.q]) &&
-            (!may_flip(h) || !judge(mesh, h, quadric, settings, cos_max_dihedral).flip))
-            continue;
-        if (guard && flip_crosses(mesh, quad, *guard))
-            continue;
-        const int32_t t0 = TriMesh::face(h), t1 = TriMesh::face(mesh.opp[h]);
-        for (int32_t v : {quad.a, quad.b, quad.p, quad.q}) {
-            flipped[v] = 1;
-            if (changed)
-                (*changed)[v] = 1;
-        }
-        update_quadrics(quadric, mesh, t0, t1, -1);
-        const FlipMoves moves = flip_edge(mesh, h);
-        update_quadrics(quadric, mesh, t0, t1, +1);
-        if (guard) {
-            guard->refresh(mesh, mesh.pos, t0);
-            guard->refresh(mesh, mesh.pos, t1);
-        }
-        char moved[4];
-        for (int k = 0; k < 4; ++k)
-            moved[k] = locked[moves.from[k]];
-        for (int k = 0; k < 4; ++k)
-            locked[moves.to[k]] = moved[k];
-        ++flips;
-    }
-    return flips;
+int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const FlipSettings &settings)
+{
+    MeshEdit edit(mesh);
+    CarriedFeatures features(analysis.features);
+    edit.attach(features);
+    return flipping_pass(PassContext{edit, features, nullptr}, analysis, settings);
 }
 
 } // namespace sfa

@@ -1,15 +1,10 @@
 #include "adapt/split.hpp"
 
-#include "fields/transfer.hpp"
 #include "geometry/circle.hpp"
-#include "geometry/crossing_guard.hpp"
 #include "geometry/edge_neighbourhood.hpp"
 #include "geometry/quadric_error.hpp"
-#include "mesh/edge_split.hpp"
-#include "mesh/parallel.hpp"
 
 #include <algorithm>
-#include <tuple>
 
 namespace sfa {
 namespace {
@@ -23,21 +18,12 @@ bool wants_split(const EdgeNeighbourhood &n, const RepairSettings &settings)
     return absolutely_long || relatively_long;
 }
 
-// The edge's one or two triangles.
-template <class Fn>
-void for_each_edge_face(const TriMesh &mesh, int32_t h, Fn &&fn)
-{
-    fn(TriMesh::face(h));
-    if (mesh.opp[h] >= 0)
-        fn(TriMesh::face(mesh.opp[h]));
-}
-
 // True if putting the new vertex at x turns no part of the edge's triangles over: each
 // half of triangle (a, b, p) keeps the triangle's orientation.
 bool halves_keep_orientation(const TriMesh &mesh, int32_t h, const Vec3 &x)
 {
     bool ok = true;
-    for_each_edge_face(mesh, h, [&](int32_t f) {
+    mesh.for_each_face_of_edge(h, [&](int32_t f) {
         const Triangle &t = mesh.tri[f];
         const Vec3 &p0 = mesh.pos[t[0]], &p1 = mesh.pos[t[1]], &p2 = mesh.pos[t[2]];
         const Vec3 normal = (p1 - p0).cross(p2 - p0);
@@ -67,7 +53,7 @@ Vec3 new_vertex_position(const TriMesh &mesh, int32_t h, bool on_ridge, const Ca
         return halves_keep_orientation(mesh, h, on_curve) ? on_curve : centre;
     }
     Vec3 normal = Vec3::Zero();
-    for_each_edge_face(mesh, h, [&](int32_t f) {
+    mesh.for_each_face_of_edge(h, [&](int32_t f) {
         const Triangle &t = mesh.tri[f];
         normal += (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]);
     });
@@ -76,9 +62,9 @@ Vec3 new_vertex_position(const TriMesh &mesh, int32_t h, bool on_ridge, const Ca
     const Vec3 placed = quadric_error_minimum_along(
         mesh,
         [&](auto &&visit) {
-            for_each_edge_face(mesh, h, visit);
+            mesh.for_each_face_of_edge(h, visit);
             for (int32_t end : {a, b})
-                if (features.rank[end] == 0)
+                if (features.rank(end) == 0)
                     mesh.for_each_outgoing(end, [&](int32_t g) { visit(TriMesh::face(g)); });
         },
         centre, normal.normalized(), max_shift_ratio * (mesh.pos[b] - mesh.pos[a]).norm());
@@ -90,7 +76,7 @@ Vec3 new_vertex_position(const TriMesh &mesh, int32_t h, bool on_ridge, const Ca
 bool split_crosses(const TriMesh &mesh, int32_t h, const Vec3 &position, const CrossingGuard &guard)
 {
     bool crosses = false;
-    for_each_edge_face(mesh, h, [&](int32_t f) {
+    mesh.for_each_face_of_edge(h, [&](int32_t f) {
         const Triangle &t = mesh.tri[f];
         if (crosses || !guard.watches_any(t))
             return;
@@ -109,73 +95,62 @@ bool split_crosses(const TriMesh &mesh, int32_t h, const Vec3 &position, const C
     return crosses;
 }
 
-struct Candidate {
-    double length;
-    int32_t a, b;
+class Splitting {
+public:
+    struct Plan {};
+    // wants_split is the whole verdict, and it reads only the edge's triangles.
+    static constexpr bool plans_ahead = false;
+
+    Splitting(const PassContext &context, const RepairSettings &settings)
+        : mesh_(context.edit.mesh()), settings_(settings), features_(context.features), guard_(context.guard)
+    {
+    }
+
+    bool wanted(int32_t h, double &order) const
+    {
+        // Both criteria need the edge longer than l or L: most edges are not, and their
+        // neighbourhood need not be looked at.
+        const double length = (mesh_.pos[mesh_.head(h)] - mesh_.pos[mesh_.tail(h)]).norm();
+        if (!(length > settings_.desired_length || length > settings_.split_length) ||
+            !wants_split(edge_neighbourhood(mesh_, h), settings_))
+            return false;
+        order = -length; // longest first (§4.1)
+        return true;
+    }
+    int32_t locate(int32_t a, int32_t b) const
+    {
+        const int32_t h = mesh_.halfedge(a, b);
+        return h >= 0 ? h : mesh_.halfedge(b, a); // a boundary edge has one direction only
+    }
+    bool plan(int32_t h, Plan &) const { return wants_split(edge_neighbourhood(mesh_, h), settings_); }
+    // An edge's triangles change only in a split of one of their edges, which marks their corners.
+    bool may_have_changed(int32_t h, const ChangedVertices &changed) const
+    {
+        return changed[mesh_.tail(h)] || changed[mesh_.head(h)];
+    }
+    bool apply(MeshEdit &edit, int32_t h, const Plan &)
+    {
+        const bool on_ridge = features_.is_ridge(h) || mesh_.opp[h] < 0;
+        const Vec3 position = new_vertex_position(mesh_, h, on_ridge, features_);
+        if (guard_ && split_crosses(mesh_, h, position, *guard_))
+            return false;
+        edit.split(h, position);
+        return true;
+    }
+
+private:
+    const TriMesh &mesh_;
+    const RepairSettings &settings_;
+    const CarriedFeatures &features_;
+    const CrossingGuard *guard_;
 };
 
 } // namespace
 
-int32_t splitting_pass(TriMesh &mesh, const RepairSettings &settings, CarriedFeatures &features,
-                       std::vector<VertexField> &fields, std::vector<char> &changed, CrossingGuard *guard)
+int32_t splitting_pass(const PassContext &context, const RepairSettings &settings)
 {
-    // Judging is independent per edge (in parallel); collecting is in half-edge order.
-    const int32_t halfedges = 3 * mesh.num_triangles();
-    std::vector<char> wanted(halfedges, 0);
-#pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t h = 0; h < halfedges; ++h) {
-        if (mesh.opp[h] >= 0 && mesh.opp[h] < h)
-            continue; // each edge once
-        // Both criteria need the edge longer than l or L: most edges are not, and their
-        // neighbourhood need not be looked at.
-        const double length = (mesh.pos[mesh.head(h)] - mesh.pos[mesh.tail(h)]).norm();
-        if (length > settings.desired_length || length > settings.split_length)
-            wanted[h] = wants_split(edge_neighbourhood(mesh, h), settings);
-    }
-    std::vector<Candidate> candidates;
-    for (int32_t h = 0; h < halfedges; ++h)
-        if (wanted[h])
-            candidates.push_back({(mesh.pos[mesh.head(h)] - mesh.pos[mesh.tail(h)]).norm(), mesh.tail(h), mesh.head(h)});
-    // Longest first (§4.1); ties in vertex order, so the result never depends on the order
-    // the candidates were found in.
-    std::sort(candidates.begin(), candidates.end(), [](const Candidate &x, const Candidate &y) {
-        return std::tie(y.length, x.a, x.b) < std::tie(x.length, y.a, y.b);
-    });
-
-    if (guard)
-        guard->index_faces(mesh, mesh.pos);
-    int32_t splits = 0;
-    for (const Candidate &c : candidates) {
-        int32_t h = mesh.halfedge(c.a, c.b);
-        if (h < 0)
-            h = mesh.halfedge(c.b, c.a); // a boundary edge has one direction only
-        if (h < 0 || !wants_split(edge_neighbourhood(mesh, h), settings))
-            continue;
-        const bool on_ridge = features.ridges.contains(c.a, c.b) || mesh.opp[h] < 0;
-        const Vec3 position = new_vertex_position(mesh, h, on_ridge, features);
-        if (guard && split_crosses(mesh, h, position, *guard))
-            continue;
-        const Stencil stencil = stencil_over(mesh, position, [&](auto &&visit) { for_each_edge_face(mesh, h, visit); });
-        for_each_edge_face(mesh, h, [&](int32_t f) {
-            for (int32_t v : mesh.tri[f])
-                changed[v] = 1;
-        });
-        const int32_t m = split_edge(mesh, h, position);
-        changed.push_back(1);
-        if (guard) {
-            guard->add_vertex(guard->watches(c.a) || guard->watches(c.b));
-            mesh.for_each_outgoing(m, [&](int32_t g) { guard->refresh(mesh, mesh.pos, TriMesh::face(g)); });
-        }
-        append_interpolated(fields, stencil);
-        features.rank.push_back(on_ridge ? 1 : 0);
-        if (on_ridge) {
-            features.ridges.remove(c.a, c.b);
-            features.ridges.add(c.a, m);
-            features.ridges.add(m, c.b);
-        }
-        ++splits;
-    }
-    return splits;
+    Splitting splitting(context, settings);
+    return run_edge_pass(context.edit, splitting);
 }
 
 } // namespace sfa

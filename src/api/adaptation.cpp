@@ -1,11 +1,8 @@
 // Adaptation: sfa_smooth, sfa_adapt.
-#include "api/analysis_settings.hpp"
+#include "api/boundary.hpp"
 
 #include "adapt/adapt.hpp"
-#include "adapt/smooth.hpp"
-#include "adapt/volume.hpp"
-#include "fields/transfer.hpp"
-#include "geometry/measures.hpp"
+#include "adapt/smooth_surface.hpp"
 #include "mesh/invariants.hpp"
 
 #include <algorithm>
@@ -14,11 +11,6 @@
 
 using namespace sfa;
 
-namespace {
-// Smoothing sweeps per pass: two let the vertices settle around what repair changed.
-constexpr int smoothing_sweeps_per_pass = 2;
-} // namespace
-
 extern "C" {
 
 SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
@@ -26,6 +18,7 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
     return call(s, "sfa_smooth", [&] {
         require(iterations >= 0, "iterations must be >= 0");
         require_mesh(s);
+        const SmoothSettings settings = smooth_settings(s->params);
         // Sweeps move vertices only: work on the handle's mesh with its positions saved (the
         // connectivity is not copied, a step of a flow calls this on every step), and on a
         // copy of the fields; if anything fails, the positions go back.
@@ -34,29 +27,7 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
         std::vector<VertexField> fields = s->fields;
         PhaseTimes seconds;
         try {
-            const double volume = enclosed_volume(mesh);
-            const bool closed = mesh.is_closed();
-            // The last adaptation's findings where there was one (a flow adapts every few
-            // steps, and a sheet thins slowly), else this surface's own.
-            CrossingGuard guard;
-            CrossingGuard *const guarded = s->params.get(Param::crossing_guard) != 0 ? &guard : nullptr;
-            if (guarded)
-                guard = timed(seconds.analysis, [&] {
-                    return CrossingGuard(s->near_sheet.size() == mesh.pos.size() ? s->near_sheet
-                                                                                 : near_facing_sheet(mesh));
-                });
-            const FeatureThresholds thresholds = feature_thresholds(s->params);
-            const MetricBounds bounds = metric_bounds(s->params);
-            SurfaceAnalysis &analysis = s->analysis_workspace;
-            for (int32_t sweep = 0; sweep < iterations; ++sweep) {
-                timed(seconds.analysis, [&] { analyze_surface(mesh, thresholds, bounds, analysis); });
-                PhaseClock clock(seconds.smoothing);
-                std::vector<Vec3> moved = smoothing_sweep(mesh, analysis, s->params.get(Param::denoise), guarded);
-                fields = fields_at_moved_vertices(mesh, moved, fields);
-                mesh.pos.swap(moved);
-                if (closed)
-                    restore_enclosed_volume(mesh, analysis.features.rank, volume);
-            }
+            seconds = smooth_surface(mesh, fields, settings, iterations, s->near_sheet, s->analysis_workspace);
         } catch (...) {
             std::copy(saved_positions.begin(), saved_positions.end(), mesh.pos.begin()); // same size: no allocation
             throw;
@@ -70,13 +41,7 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
 {
     return call(s, "sfa_adapt", [&] {
         require_mesh(s);
-        const Parameters &p = s->params;
-        const double edge_length = p.get(Param::edge_length) > 0 ? p.get(Param::edge_length) : s->mean_edge_length_at_set;
-        const AdaptSettings settings{feature_thresholds(p), metric_bounds(p), p.get(Param::flip_dihedral_angle) * radians,
-                                     repair_settings(p, edge_length), static_cast<int>(p.get(Param::adapt_passes)),
-                                     smoothing_sweeps_per_pass,
-                                     p.get(Param::denoise),
-                                     p.get(Param::crossing_guard) != 0};
+        const AdaptSettings settings = adapt_settings(s->params, s->mean_edge_length_at_set);
 
         // Work on copies; the velocities travel as one more field. Commit only at the end.
         TriMesh mesh = s->mesh;

@@ -1,7 +1,7 @@
 // Analysis: sfa_measure, sfa_get_feature_ranks, sfa_get_vertex_frames, sfa_get_ridge_edges.
 #include "api/boundary.hpp"
 
-#include "api/analysis_settings.hpp"
+#include "adapt/settings.hpp"
 #include "geometry/measures.hpp"
 #include "geometry/self_intersection.hpp"
 
@@ -17,6 +17,14 @@ void require_capacity(const sfa_surface *s, int32_t capacity)
                       s->mesh.num_vertices(), capacity);
         fail(Status::argument, message);
     }
+}
+
+// The analysis of the surface's current mesh with its parameters. Computed on demand: it
+// costs about a microsecond per vertex, and a cache would have to follow every change of
+// mesh or parameter.
+SurfaceAnalysis current_analysis(const sfa_surface *s)
+{
+    return analyze_surface(s->mesh, feature_thresholds(s->params), metric_bounds(s->params));
 }
 
 } // namespace
@@ -63,7 +71,7 @@ SFA_EXPORT int sfa_get_feature_ranks(const sfa_surface *s, int32_t capacity, int
         require(ranks != nullptr, "ranks is NULL");
         require_mesh(s);
         require_capacity(s, capacity);
-        const SurfaceAnalysis analysis = current_analysis(s, s->mesh);
+        const SurfaceAnalysis analysis = current_analysis(s);
         for (size_t v = 0; v < analysis.features.rank.size(); ++v)
             ranks[v] = analysis.features.rank[v];
     });
@@ -75,7 +83,7 @@ SFA_EXPORT int sfa_get_vertex_frames(const sfa_surface *s, int32_t capacity, dou
     return call(s, "sfa_get_vertex_frames", [&] {
         require_mesh(s);
         require_capacity(s, capacity);
-        const SurfaceAnalysis analysis = current_analysis(s, s->mesh);
+        const SurfaceAnalysis analysis = current_analysis(s);
         for (size_t v = 0; v < analysis.metric.size(); ++v) {
             const VertexMetric &m = analysis.metric[v];
             for (int k = 0; k < 3; ++k) {
@@ -96,7 +104,7 @@ SFA_EXPORT int sfa_get_ridge_edges(const sfa_surface *s, int32_t capacity, int32
     return call(s, "sfa_get_ridge_edges", [&] {
         require(index_base == 0 || index_base == 1, "index_base must be 0 or 1");
         require_mesh(s);
-        const SurfaceAnalysis analysis = current_analysis(s, s->mesh);
+        const SurfaceAnalysis analysis = current_analysis(s);
         const auto &ridges = analysis.features.ridge_edges;
         const int32_t found = static_cast<int32_t>(ridges.size());
         if (count)

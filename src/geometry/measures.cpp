@@ -1,5 +1,6 @@
 #include "geometry/measures.hpp"
 
+#include "geometry/angles.hpp"
 #include "mesh/parallel.hpp"
 
 #include <algorithm>
@@ -8,9 +9,7 @@
 #include <vector>
 
 namespace sfa {
-
 namespace {
-constexpr double degrees_per_radian = 180.0 / 3.14159265358979323846;
 
 // Angle between two vectors, accurate also for angles near 0 and 180 degrees.
 double angle_between(const Vec3 &u, const Vec3 &w) { return std::atan2(u.cross(w).norm(), u.dot(w)); }

@@ -4,9 +4,13 @@
 
 namespace sfa {
 
-std::vector<int32_t> compact(TriMesh &mesh)
+Renumbering compact(TriMesh &mesh)
 {
-    std::vector<int32_t> vertex_map(mesh.pos.size(), -1), triangle_map(mesh.tri.size(), -1);
+    Renumbering renumbering;
+    renumbering.keeps_order = true;
+    std::vector<int32_t> &vertex_map = renumbering.vertex_map, &triangle_map = renumbering.triangle_map;
+    vertex_map.assign(mesh.pos.size(), -1);
+    triangle_map.assign(mesh.tri.size(), -1);
     int32_t vertices = 0, triangles = 0;
     for (int32_t v = 0; v < mesh.num_vertices(); ++v)
         if (!is_dead_vertex(mesh, v))
@@ -15,9 +19,9 @@ std::vector<int32_t> compact(TriMesh &mesh)
         if (!is_dead_triangle(mesh, t))
             triangle_map[t] = triangles++;
     if (vertices == mesh.num_vertices() && triangles == mesh.num_triangles())
-        return vertex_map;
+        return renumbering;
 
-    const auto new_halfedge = [&](int32_t h) { return h < 0 ? -1 : 3 * triangle_map[h / 3] + h % 3; };
+    const auto new_halfedge = [&](int32_t h) { return renumbering.new_halfedge(h); };
     TriMesh out;
     out.pos.reserve(vertices);
     out.v2h.reserve(vertices);
@@ -36,7 +40,7 @@ std::vector<int32_t> compact(TriMesh &mesh)
                 out.opp.push_back(new_halfedge(mesh.opp[3 * t + i]));
         }
     mesh = std::move(out);
-    return vertex_map;
+    return renumbering;
 }
 
 } // namespace sfa

@@ -62,7 +62,7 @@ bool collapse_keeps_manifold(const TriMesh &mesh, int32_t h)
     return ok;
 }
 
-void collapse_edge(TriMesh &mesh, int32_t h, const Vec3 &position)
+CollapseRecord collapse_edge(TriMesh &mesh, int32_t h, const Vec3 &position)
 {
     const int32_t twin = mesh.opp[h];
     const int32_t gone = mesh.tail(h), keep = mesh.head(h);
@@ -73,12 +73,15 @@ void collapse_edge(TriMesh &mesh, int32_t h, const Vec3 &position)
     // Each dying triangle (gone, keep, p) leaves its two other edges' outer twins joined:
     // keep -> p's twin (p -> keep) with p -> gone's twin (gone -> p, now keep -> p).
     int32_t survivors[4] = {-1, -1, -1, -1}; // outer twins: p->keep, keep->p, q->keep, keep->q
-    int32_t opposite[2] = {-1, -1};
+    CollapseRecord record{gone, keep, {-1, -1}, {-1, -1}, {{-1, -1}, {-1, -1}}, {{-1, -1}, {-1, -1}}};
     int k = 0;
     for (int32_t side : {h, twin}) {
         if (side < 0)
             continue;
-        opposite[k / 2] = mesh.head(TriMesh::next(side));
+        record.opposite[k / 2] = mesh.head(TriMesh::next(side));
+        record.dead_faces[k / 2] = TriMesh::face(side);
+        record.dead_halves[k / 2][0] = TriMesh::next(side);
+        record.dead_halves[k / 2][1] = TriMesh::prev(side);
         const int32_t to_p = mesh.opp[TriMesh::next(side)], from_p = mesh.opp[TriMesh::prev(side)];
         // For the twin's triangle (keep, gone, q) the roles turn round: next is gone -> q,
         // prev is q -> keep.
@@ -90,6 +93,8 @@ void collapse_edge(TriMesh &mesh, int32_t h, const Vec3 &position)
             survivors[3] = to_p;   // q -> keep (was q -> gone)
         }
         link(mesh, to_p, from_p);
+        record.joined[k / 2][0] = to_p;
+        record.joined[k / 2][1] = from_p;
         k += 2;
     }
     for (int32_t side : {h, twin}) {
@@ -110,10 +115,11 @@ void collapse_edge(TriMesh &mesh, int32_t h, const Vec3 &position)
     if (any_keep < 0)
         any_keep = survivors[0] >= 0 ? TriMesh::next(survivors[0]) : TriMesh::next(survivors[3]);
     mesh.v2h[keep] = canonical_outgoing(mesh, any_keep);
-    if (opposite[0] >= 0)
-        mesh.v2h[opposite[0]] = canonical_outgoing(mesh, outgoing_of(survivors[0], survivors[1]));
-    if (opposite[1] >= 0)
-        mesh.v2h[opposite[1]] = canonical_outgoing(mesh, outgoing_of(survivors[3], survivors[2]));
+    if (record.opposite[0] >= 0)
+        mesh.v2h[record.opposite[0]] = canonical_outgoing(mesh, outgoing_of(survivors[0], survivors[1]));
+    if (record.opposite[1] >= 0)
+        mesh.v2h[record.opposite[1]] = canonical_outgoing(mesh, outgoing_of(survivors[3], survivors[2]));
+    return record;
 }
 
 } // namespace sfa

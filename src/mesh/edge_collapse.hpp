@@ -12,10 +12,23 @@ namespace sfa {
 // tetrahedron's edges, or an ear of an open surface).
 bool collapse_keeps_manifold(const TriMesh &mesh, int32_t h);
 
+// Where the elements of a contraction went, for the data that lives on half-edges and
+// faces (mesh_edit.hpp). Entries of the twin's side are -1 when the edge was on the boundary.
+struct CollapseRecord {
+    int32_t gone, keep;
+    int32_t opposite[2];      // p of (gone, keep, p) and q of (keep, gone, q)
+    int32_t dead_faces[2];    // those two triangles
+    // Each dead face's two other edges became one edge: joined[k] are its half-edges now
+    // (twins; one of them is -1 where the edge is on the boundary), and dead_halves[k] the
+    // dead face's own halves of the two edges, which still hold their data.
+    int32_t joined[2][2];
+    int32_t dead_halves[2][2];
+};
+
 // Contracts h = (gone -> keep): keep moves to `position`, every triangle of gone's takes
 // keep instead, and gone and the edge's one or two triangles are marked dead (v2h[gone] =
 // -1, corners -1) until compact() removes them. Requires collapse_keeps_manifold. O(valence).
-void collapse_edge(TriMesh &mesh, int32_t h, const Vec3 &position);
+CollapseRecord collapse_edge(TriMesh &mesh, int32_t h, const Vec3 &position);
 
 // Dead elements of a mesh being changed by collapse_edge.
 inline bool is_dead_vertex(const TriMesh &mesh, int32_t v) { return mesh.v2h[v] < 0; }

@@ -12,7 +12,7 @@ void link(TriMesh &mesh, int32_t x, int32_t y)
 
 } // namespace
 
-int32_t split_edge(TriMesh &mesh, int32_t h, const Vec3 &position)
+SplitRecord split_edge(TriMesh &mesh, int32_t h, const Vec3 &position)
 {
     const int32_t twin = mesh.opp[h];
     const int32_t t0 = TriMesh::face(h), i = h % 3;
@@ -32,10 +32,12 @@ int32_t split_edge(TriMesh &mesh, int32_t h, const Vec3 &position)
     if (mesh.v2h[b] == at(t0, i + 1))
         mesh.v2h[b] = 3 * t2 + 1;
 
+    SplitRecord record{m, a, b, p, -1, {t0, -1}, {t2, -1}, {{h, 3 * t2}, {-1, -1}}, {at(t0, i + 1), -1},
+                       {3 * t2 + 1, -1}, {at(t0, i + 1), 3 * t2 + 2, -1, -1}};
     if (twin < 0) {
         mesh.opp[h] = -1;      // a -> m
         mesh.opp[3 * t2] = -1; // m -> b
-        return m;
+        return record;
     }
     const int32_t t1 = TriMesh::face(twin), j = twin % 3;
     const int32_t q = mesh.head(TriMesh::next(twin));
@@ -49,7 +51,16 @@ int32_t split_edge(TriMesh &mesh, int32_t h, const Vec3 &position)
     link(mesh, 3 * t2, twin);              // m -> b and b -> m
     if (mesh.v2h[a] == at(t1, j + 1))
         mesh.v2h[a] = 3 * t3 + 1;
-    return m;
+    record.q = q;
+    record.old_faces[1] = t1;
+    record.new_faces[1] = t3;
+    record.halves[1][0] = twin;
+    record.halves[1][1] = 3 * t3;
+    record.moved_from[1] = at(t1, j + 1);
+    record.moved_to[1] = 3 * t3 + 1;
+    record.fresh[2] = at(t1, j + 1);
+    record.fresh[3] = 3 * t3 + 2;
+    return record;
 }
 
 } // namespace sfa

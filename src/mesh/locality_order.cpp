@@ -61,9 +61,11 @@ std::vector<int32_t> inverse(const std::vector<int32_t> &order)
 
 } // namespace
 
-std::vector<int32_t> order_for_locality(TriMesh &mesh)
+Renumbering order_for_locality(TriMesh &mesh)
 {
-    const std::vector<int32_t> vertex_map = inverse(morton_order(mesh.pos));
+    Renumbering renumbering;
+    renumbering.vertex_map = inverse(morton_order(mesh.pos));
+    const std::vector<int32_t> &vertex_map = renumbering.vertex_map;
     // Triangles by their smallest new vertex, ties by old number: a counting sort.
     std::vector<int32_t> first_vertex(mesh.tri.size()), start(mesh.pos.size() + 1, 0);
     for (size_t t = 0; t < mesh.tri.size(); ++t) {
@@ -76,8 +78,8 @@ std::vector<int32_t> order_for_locality(TriMesh &mesh)
     std::vector<int32_t> triangle_order(mesh.tri.size());
     for (int32_t t = 0; t < mesh.num_triangles(); ++t)
         triangle_order[start[first_vertex[t]]++] = t;
-    const std::vector<int32_t> triangle_map = inverse(triangle_order);
-    const auto new_halfedge = [&](int32_t h) { return h < 0 ? -1 : 3 * triangle_map[h / 3] + h % 3; };
+    renumbering.triangle_map = inverse(triangle_order);
+    const auto new_halfedge = [&](int32_t h) { return renumbering.new_halfedge(h); };
 
     TriMesh out;
     out.pos.resize(mesh.pos.size());
@@ -98,7 +100,7 @@ std::vector<int32_t> order_for_locality(TriMesh &mesh)
             out.opp[3 * t + i] = new_halfedge(mesh.opp[3 * old + i]);
     }
     mesh = std::move(out);
-    return vertex_map;
+    return renumbering;
 }
 
 } // namespace sfa

@@ -5,16 +5,15 @@
 // order, makes those loops about twice as fast on a surface adapted through a flow.
 #pragma once
 
+#include "mesh/renumbering.hpp"
 #include "mesh/tri_mesh.hpp"
-
-#include <vector>
 
 namespace sfa {
 
 // Renumbers the vertices in Morton (Z-curve) order of their positions in the bounding box,
 // ties by old number, and the triangles by their smallest new vertex, ties by old number:
-// deterministic. Corners keep their order within each triangle. Returns, for every old
-// vertex, its new number; callers renumber their vertex data with it.
-std::vector<int32_t> order_for_locality(TriMesh &mesh);
+// deterministic. Corners keep their order within each triangle. Returns the renumbering;
+// callers renumber their element data with it.
+Renumbering order_for_locality(TriMesh &mesh);
 
 } // namespace sfa

@@ -70,6 +70,27 @@ struct TriMesh {
         return found;
     }
 
+    // Calls fn(f) for the one or two triangles of the edge of h.
+    template <class Fn>
+    void for_each_face_of_edge(int32_t h, Fn &&fn) const {
+        fn(face(h));
+        if (opp[h] >= 0)
+            fn(face(opp[h]));
+    }
+
+    // Calls fn(f) once for every triangle around either end of h's edge (the edge's own
+    // included): the tail's fan counter-clockwise, then the rest of the head's.
+    template <class Fn>
+    void for_each_face_around_edge(int32_t h, Fn &&fn) const {
+        const int32_t a = tail(h);
+        for_each_outgoing(a, [&](int32_t g) { fn(face(g)); });
+        for_each_outgoing(head(h), [&](int32_t g) {
+            const Triangle &t = tri[face(g)];
+            if (t[0] != a && t[1] != a && t[2] != a)
+                fn(face(g)); // not seen from the tail already
+        });
+    }
+
     // Calls fn(h) for every half-edge leaving v, counter-clockwise from v2h[v].
     template <class Fn>
     void for_each_outgoing(int32_t v, Fn &&fn) const {

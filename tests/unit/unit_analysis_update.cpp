@@ -1,10 +1,12 @@
 // Unit test of the partial analysis inside an adaptation pass: after splitting, contraction
-// and flipping, the vertices those passes mark are analysed anew (update_geometry), and the
-// result must be what a full analysis of the changed mesh gives, to the last bit.
+// and flipping, the vertices whose fans the edit reported changed are analysed anew
+// (TrackedAnalysis), and the result must be what a full analysis of the changed mesh
+// gives, to the last bit.
 #include "adapt/contract.hpp"
 #include "adapt/flip.hpp"
 #include "adapt/split.hpp"
-#include "api/analysis_settings.hpp"
+#include "adapt/settings.hpp"
+#include "geometry/tracked_analysis.hpp"
 #include "mesh/validate.hpp"
 
 #include <cmath>
@@ -53,24 +55,26 @@ void each_pass_leaves_the_analysis_a_full_one_would_give(void **)
     int32_t splits = 0, contractions = 0, flips = 0;
     for (double length : {0.06, 0.25}) {
         SurfaceAnalysis geometry = analyze_surface(mesh, thresholds, bounds);
+        MeshEdit edit(mesh);
         CarriedFeatures features(geometry.features);
-        std::vector<VertexField> fields;
+        TrackedAnalysis tracked(geometry, mesh);
+        edit.attach(features);
+        edit.attach(tracked);
+        const PassContext context{edit, features, nullptr};
         const RepairSettings repair = repair_settings(parameters, length);
-        std::vector<char> changed(mesh.pos.size(), 0);
 
-        splits += splitting_pass(mesh, repair, features, fields, changed);
-        update_geometry(mesh, changed, bounds, geometry);
+        splits += splitting_pass(context, repair);
+        tracked.update(mesh, bounds);
         assert_same_geometry(geometry, analyze_geometry(mesh, bounds));
 
-        changed.assign(mesh.pos.size(), 0);
-        contractions += contraction_pass(mesh, geometry, repair, features, fields, changed);
-        update_geometry(mesh, changed, bounds, geometry);
+        contractions += contraction_pass(context, geometry, repair);
+        edit.compact();
+        tracked.update(mesh, bounds);
         assert_same_geometry(geometry, analyze_geometry(mesh, bounds));
 
-        changed.assign(mesh.pos.size(), 0);
         geometry.features = features.as_features(mesh);
-        flips += flipping_pass(mesh, geometry, FlipSettings{bounds, Parameters().get(Param::flip_dihedral_angle) * radians}, &changed);
-        update_geometry(mesh, changed, bounds, geometry);
+        flips += flipping_pass(context, geometry, flip_settings(parameters));
+        tracked.update(mesh, bounds);
         assert_same_geometry(geometry, analyze_geometry(mesh, bounds));
     }
     print_message("%d splits, %d contractions, %d flips\n", splits, contractions, flips);

@@ -4,7 +4,7 @@
 // flipping stretches a cylinder's triangles along its axis.
 #include "adapt/flip.hpp"
 #include "adapt/smooth.hpp"
-#include "api/analysis_settings.hpp"
+#include "adapt/settings.hpp"
 #include "geometry/measures.hpp"
 #include "mesh/edge_flip.hpp"
 #include "mesh/invariants.hpp"
@@ -35,7 +35,7 @@ constexpr double pi = 3.14159265358979323846;
 // The library's defaults (the paper's).
 const FeatureThresholds default_thresholds = feature_thresholds(Parameters());
 const MetricBounds default_bounds = metric_bounds(Parameters());
-const FlipSettings default_flips{default_bounds, Parameters().get(Param::flip_dihedral_angle) * radians};
+const FlipSettings default_flips = flip_settings(Parameters());
 
 TriMesh mesh_of(const std::vector<double> &xyz, const std::vector<int32_t> &tris)
 {

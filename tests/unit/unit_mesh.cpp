@@ -216,7 +216,7 @@ void splits_keep_every_invariant(void **)
             const int32_t a = mesh.tail(h), b = mesh.head(h);
             const bool interior = mesh.opp[h] >= 0;
             const Vec3 middle = (mesh.pos[a] + mesh.pos[b]) / 2;
-            const int32_t m = split_edge(mesh, h, middle);
+            const int32_t m = split_edge(mesh, h, middle).vertex;
             assert_string_equal(invariant_violation(mesh).c_str(), "");
             assert_int_equal(m, vertices);
             assert_int_equal(mesh.num_triangles(), triangles + (interior ? 2 : 1));
@@ -261,7 +261,7 @@ void locality_order_keeps_the_surface_and_brings_neighbours_close(void **)
                 tris[3 * ((t * 7919) % m) + i] = shuffle[shape->tris[3 * t + i]];
         const TriMesh before = validated_mesh(MeshInput{n, xyz.data(), m, tris.data(), 0, false});
         TriMesh after = before;
-        const std::vector<int32_t> map = order_for_locality(after);
+        const std::vector<int32_t> map = order_for_locality(after).vertex_map;
 
         assert_string_equal(invariant_violation(after).c_str(), "");
         std::vector<char> hit(n, 0);
@@ -299,7 +299,7 @@ void contractions_keep_every_invariant_and_the_topology(void **)
             const int32_t keep = mesh.head(h), gone = mesh.tail(h);
             const Vec3 target = mesh.pos[keep];
             collapse_edge(mesh, h, target);
-            const std::vector<int32_t> renumber = compact(mesh);
+            const std::vector<int32_t> renumber = compact(mesh).vertex_map;
             assert_int_equal(renumber[gone], -1);
             assert_true(mesh.pos[renumber[keep]] == target);
             assert_string_equal(invariant_violation(mesh).c_str(), "");

@@ -1,0 +1,99 @@
+// The pattern that splitting (§4.1), contraction (§4.2) and flipping (§3.3) share, written
+// once: every edge is judged in parallel on the mesh as the pass finds it; the candidates
+// are put in the operation's order (the paper's: longest first, shortest first, largest
+// opposite angle first), ties by their vertices so that the result never depends on the
+// order they were found in; then they are applied one by one, greedily, each judged again
+// only if an earlier change of the pass touched what its verdict read.
+#pragma once
+
+#include "adapt/carried_features.hpp"
+#include "geometry/crossing_guard.hpp"
+#include "mesh/changed_vertices.hpp"
+#include "mesh/mesh_edit.hpp"
+#include "mesh/parallel.hpp"
+
+#include <algorithm>
+#include <tuple>
+#include <vector>
+
+namespace sfa {
+
+// What every pass of an adaptation works with: the edit through which it changes the mesh
+// (with every attribute and observer attached), the features carried through the call, and
+// the crossing guard if it is on (null otherwise).
+struct PassContext {
+    MeshEdit &edit;
+    const CarriedFeatures &features;
+    const CrossingGuard *guard;
+};
+
+// Runs one pass of `operation`, which supplies:
+//   struct Plan;                        what its full check found (where a merged vertex goes, say)
+//   static constexpr bool plans_ahead;  true: every candidate's full check is made in
+//                                       parallel before the serial phase (a costly check)
+//   bool wanted(int32_t h, double &order) const;
+//       the first judgement, in parallel, of h: a boundary half-edge or the lower half of
+//       an interior edge; a smaller order goes first
+//   int32_t locate(int32_t a, int32_t b) const;
+//       the edge a-b's half-edge as the mesh now is, or -1 if it is gone
+//   bool plan(int32_t h, Plan &plan) const;
+//       the full check on the mesh as it now is (in parallel when plans_ahead)
+//   bool may_have_changed(int32_t h, const ChangedVertices &changed) const;
+//       true if a change since the pass began (the fans marked in `changed`) can have
+//       changed the verdict on h: then it is judged again
+//   bool apply(MeshEdit &edit, int32_t h, const Plan &plan);
+//       the change, through the edit; false if refused at the last moment
+// Returns the number of changes made. Nothing in the parallel phases may throw.
+template <class Operation>
+int32_t run_edge_pass(MeshEdit &edit, Operation &operation)
+{
+    const TriMesh &mesh = edit.mesh();
+    const int32_t halfedges = 3 * mesh.num_triangles();
+    std::vector<char> wanted(halfedges, 0);
+    std::vector<double> order(halfedges);
+#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 1024)
+    for (int32_t h = 0; h < halfedges; ++h)
+        if (mesh.opp[h] < 0 || mesh.opp[h] > h) // each edge once
+            wanted[h] = operation.wanted(h, order[h]);
+
+    struct Candidate {
+        double order;
+        int32_t a, b;
+    };
+    std::vector<Candidate> candidates;
+    for (int32_t h = 0; h < halfedges; ++h)
+        if (wanted[h])
+            candidates.push_back({order[h], mesh.tail(h), mesh.head(h)});
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate &x, const Candidate &y) {
+        return std::tie(x.order, x.a, x.b) < std::tie(y.order, y.a, y.b);
+    });
+
+    const int32_t count = static_cast<int32_t>(candidates.size());
+    std::vector<typename Operation::Plan> plans(count);
+    std::vector<char> planned(count, 1); // without plans_ahead, `wanted` was the whole verdict
+    if constexpr (Operation::plans_ahead) {
+#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 64)
+        for (int32_t k = 0; k < count; ++k) {
+            const int32_t h = operation.locate(candidates[k].a, candidates[k].b);
+            planned[k] = h >= 0 && operation.plan(h, plans[k]);
+        }
+    }
+
+    edit.begin_changes();
+    ChangedVertices changed(mesh.num_vertices());
+    const Attached listening(edit, changed);
+    int32_t applied = 0;
+    for (int32_t k = 0; k < count; ++k) {
+        const int32_t h = operation.locate(candidates[k].a, candidates[k].b);
+        if (h < 0)
+            continue;
+        bool allowed = planned[k];
+        if (operation.may_have_changed(h, changed))
+            allowed = operation.plan(h, plans[k]);
+        if (allowed && operation.apply(edit, h, plans[k]))
+            ++applied;
+    }
+    return applied;
+}
+
+} // namespace sfa

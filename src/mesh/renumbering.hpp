@@ -1,0 +1,50 @@
+// A renumbering of a mesh's vertices and triangles (compaction, the locality order), as
+// the data living on its elements must follow it.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace sfa {
+
+struct Renumbering {
+    std::vector<int32_t> vertex_map;   // old vertex -> new number, or -1 if it is gone
+    std::vector<int32_t> triangle_map; // old triangle -> new number, or -1 if it is gone
+    // True if the survivors keep their order (compaction): new numbers never exceed old ones,
+    // so per-element arrays can be renumbered in place, front to back.
+    bool keeps_order = false;
+
+    // Corners keep their order within each triangle, so half-edge 3 t + i goes to
+    // 3 triangle_map[t] + i.
+    int32_t new_halfedge(int32_t h) const { return h < 0 ? -1 : 3 * triangle_map[h / 3] + h % 3; }
+
+    // Moves every element's entry of `values` (one per old element) to its new number; gone
+    // elements' entries are dropped. `per_element` entries per element (3 for half-edges).
+    template <class T>
+    void apply(std::vector<T> &values, const std::vector<int32_t> &map, size_t per_element = 1) const
+    {
+        size_t count = 0;
+        for (int32_t target : map)
+            count += target >= 0;
+        std::vector<T> out(per_element * count);
+        for (size_t old = 0; old < map.size(); ++old)
+            if (map[old] >= 0)
+                for (size_t k = 0; k < per_element; ++k)
+                    out[per_element * static_cast<size_t>(map[old]) + k] = values[per_element * old + k];
+        values.swap(out);
+    }
+    template <class T>
+    void apply_to_vertices(std::vector<T> &values, size_t per_vertex = 1) const
+    {
+        apply(values, vertex_map, per_vertex);
+    }
+    // Per half-edge: three entries per triangle.
+    template <class T>
+    void apply_to_halfedges(std::vector<T> &values) const
+    {
+        apply(values, triangle_map, 3);
+    }
+};
+
+} // namespace sfa
