@@ -7,6 +7,18 @@
 #include <algorithm>
 
 namespace sfa {
+namespace {
+
+// Where the new or merged vertex of edge h lies over none of the faces given (they are all
+// degenerate), its values come from the edge's ends, half and half.
+Stencil or_the_edge_midpoint(const Stencil &stencil, const TriMesh &mesh, int32_t h)
+{
+    if (stencil.corners[0] >= 0)
+        return stencil;
+    return {{mesh.tail(h), mesh.head(h), mesh.head(h)}, Eigen::Vector3d(0.5, 0.5, 0)};
+}
+
+} // namespace
 
 void MeshEdit::attach(EditListener &listener)
 {
@@ -30,7 +42,8 @@ int32_t MeshEdit::split(int32_t h, const Vec3 &position)
 {
     Stencil stencil{{-1, -1, -1}, Eigen::Vector3d::Zero()};
     if (interpolating_)
-        stencil = stencil_over(mesh_, position, [&](auto &&visit) { mesh_.for_each_face_of_edge(h, visit); });
+        stencil = or_the_edge_midpoint(
+            stencil_over(mesh_, position, [&](auto &&visit) { mesh_.for_each_face_of_edge(h, visit); }), mesh_, h);
     fans_.clear();
     mesh_.for_each_face_of_edge(h, [&](int32_t f) {
         for (int32_t v : mesh_.tri[f])
@@ -48,7 +61,10 @@ void MeshEdit::collapse(int32_t h, const Vec3 &position)
 {
     Stencil stencil{{-1, -1, -1}, Eigen::Vector3d::Zero()};
     if (interpolating_)
-        stencil = stencil_over(mesh_, position, [&](auto &&visit) { mesh_.for_each_face_around_edge(h, visit); });
+        stencil = or_the_edge_midpoint(
+            stencil_over(mesh_, position, [&](auto &&visit) { mesh_.for_each_face_around_edge(h, visit); }), mesh_, h);
+    for (EditListener *listener : listeners_)
+        listener->before_collapse(mesh_, h);
     const CollapseRecord record = collapse_edge(mesh_, h, position);
     fans_.assign(1, record.keep);
     mesh_.for_each_neighbour(record.keep, [&](int32_t w, int32_t) { fans_.push_back(w); });

@@ -22,7 +22,8 @@ namespace sfa {
 // What one operation changed. `fans` lists the vertices whose fans (the faces around them)
 // changed: an analysis of those alone brings a per-vertex analysis up to date. `stencil`
 // places the new or merged vertex over the mesh as it was (only computed when a listener
-// interpolates: otherwise its corners are -1).
+// interpolates: otherwise its corners are -1; where the vertex lies over no face of the
+// edge's, all of them degenerate, it is the edge's midpoint).
 struct SplitChange {
     const SplitRecord &record;
     const Stencil &stencil;
@@ -59,6 +60,9 @@ public:
     // The changes that follow come one by one on the mesh as it is now (a pass begins):
     // an index of positions is built here.
     virtual void begin_changes(const TriMesh &) {}
+    // Heard before a contraction of h, with the mesh as it still is (the faces around the
+    // edge's ends are about to change shape or die).
+    virtual void before_collapse(const TriMesh &, int32_t /*h*/) {}
     // Heard after the change, with the mesh as it is then.
     virtual void split(const TriMesh &, const SplitChange &) {}
     virtual void collapse(const TriMesh &, const CollapseChange &) {}
