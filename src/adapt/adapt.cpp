@@ -13,101 +13,143 @@
 
 namespace sfa {
 namespace {
+
 constexpr double settled_fraction = 1e-2;
+
+// One sfa_adapt call: the edit, and everything attached to it that follows its changes.
+class Adaptation {
+public:
+    Adaptation(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
+               SurfaceAnalysis &workspace, PhaseTimes &seconds)
+        : mesh_(mesh), settings_(settings), seconds_(seconds), geometry_(workspace), edit_(mesh),
+          carried_fields_(fields), features_(detected_features()), tracked_(geometry_, mesh), guard_listener_(guard_)
+    {
+        edit_.attach(carried_fields_);
+        edit_.attach(features_);
+        edit_.attach(tracked_);
+        // Where the surface is thinner than an edge, no step may carry it through itself.
+        if (settings.crossing_guard) {
+            guard_ = timed(seconds_.analysis, [&] { return CrossingGuard(near_facing_sheet(mesh)); });
+            edit_.attach(guard_listener_);
+        }
+    }
+
+    // Split, contract, flip, then smooth; returns the number of splits, contractions and
+    // flips it made, and adds them to `counts`.
+    int32_t pass(AdaptCounts &counts);
+
+    // The enclosed volume back (if the surface is closed) and, if the connectivity changed,
+    // the locality order; the vertices the guard watched, numbered as the mesh is now.
+    std::vector<char> finish(const AdaptCounts &counts, bool closed, double volume);
+
+private:
+    const CrossingGuard *guard() const { return settings_.crossing_guard ? &guard_ : nullptr; }
+
+    // Features are detected once, at the start; the geometry is analysed in full where
+    // every vertex has moved (at the start and after each sweep). After splitting,
+    // contraction and flipping only the vertices whose fans changed are analysed anew
+    // (tracked_analysis.hpp): the same result as a full analysis, for a fraction of its cost.
+    const Features &detected_features()
+    {
+        timed(seconds_.analysis, [&] { analyze_surface(mesh_, settings_.features, settings_.metric, geometry_); });
+        return geometry_.features;
+    }
+    void analyse_all()
+    {
+        PhaseClock clock(seconds_.analysis);
+        analyze_geometry(mesh_, settings_.metric, geometry_);
+        geometry_.features = features_.as_features(mesh_);
+        tracked_.mark_current();
+    }
+    void analyse_changed()
+    {
+        PhaseClock clock(seconds_.analysis);
+        tracked_.update(mesh_, settings_.metric);
+        geometry_.features = features_.as_features(mesh_);
+    }
+
+    TriMesh &mesh_;
+    const AdaptSettings &settings_;
+    PhaseTimes &seconds_;
+    SurfaceAnalysis &geometry_;
+    MeshEdit edit_;
+    CarriedFields carried_fields_;
+    CarriedFeatures features_;
+    TrackedAnalysis tracked_;
+    CrossingGuard guard_;
+    GuardListener guard_listener_;
+};
+
+int32_t Adaptation::pass(AdaptCounts &counts)
+{
+    if (++counts.passes > 1)
+        analyse_all(); // the last pass's sweeps moved every vertex
+    const PassContext context{edit_, features_, guard()};
+    // Repair first (§4): the density the desired edge length asks for, and no extreme
+    // angles; then optimization (§3) of the repaired mesh.
+    const int32_t splits = timed(seconds_.repair, [&] { return splitting_pass(context, settings_.repair); });
+    analyse_changed();
+    const int32_t contractions = timed(seconds_.repair, [&] {
+        const int32_t made = contraction_pass(context, geometry_, settings_.repair);
+        edit_.compact();
+        return made;
+    });
+    analyse_changed();
+    const int32_t flips = timed(seconds_.flipping, [&] { return flipping_pass(context, geometry_, settings_.flip); });
+    analyse_changed();
+    for (int sweep = 0; sweep < settings_.smoothing_sweeps; ++sweep) {
+        if (sweep > 0)
+            analyse_all();
+        PhaseClock clock(seconds_.smoothing);
+        std::vector<Vec3> moved =
+            smoothing_sweep(mesh_, geometry_, settings_.denoise, settings_.crossing_guard ? &guard_ : nullptr);
+        edit_.move(moved);
+    }
+    counts.splits += splits;
+    counts.contractions += contractions;
+    counts.flips += flips;
+    return splits + contractions + flips;
+}
+
+std::vector<char> Adaptation::finish(const AdaptCounts &counts, bool closed, double volume)
+{
+    if (closed) {
+        // The offset moves vertices along their normals, not over the surface: their fields
+        // stay with them.
+        PhaseClock clock(seconds_.smoothing);
+        restore_enclosed_volume(mesh_, features_.ranks(), volume);
+    }
+    // New vertices and triangles were appended where they were made: put neighbours next
+    // to each other in memory again, for every loop until the next adaptation. Only what
+    // outlives the call follows.
+    if (counts.splits + counts.contractions > 0) {
+        PhaseClock clock(seconds_.repair);
+        edit_.detach(tracked_);
+        edit_.detach(features_);
+        edit_.order_for_locality();
+    }
+    return settings_.crossing_guard ? guard_.watched() : std::vector<char>();
+}
+
 } // namespace
 
 AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
                           std::vector<char> &near_sheet, SurfaceAnalysis &workspace)
 {
     AdaptCounts counts;
-    PhaseTimes &seconds = counts.seconds;
-    // Features are detected once; the geometry is analysed in full where every vertex has
-    // moved (at the start and after each sweep). After splitting, contraction and flipping
-    // only the vertices whose fans changed are analysed anew (tracked_analysis.hpp): the
-    // same result as a full analysis, for a fraction of its cost.
-    SurfaceAnalysis &geometry = workspace;
-    timed(seconds.analysis, [&] { analyze_surface(mesh, settings.features, settings.metric, geometry); });
-
-    // Everything that lives on the mesh follows every change of the edit.
-    MeshEdit edit(mesh);
-    CarriedFields carried_fields(fields);
-    CarriedFeatures features(geometry.features);
-    TrackedAnalysis tracked(geometry, mesh);
-    edit.attach(carried_fields);
-    edit.attach(features);
-    edit.attach(tracked);
-    // Where the surface is thinner than an edge, no step may carry it through itself.
-    CrossingGuard guard;
-    GuardListener guard_listener(guard);
-    if (settings.crossing_guard) {
-        guard = timed(seconds.analysis, [&] { return CrossingGuard(near_facing_sheet(mesh)); });
-        edit.attach(guard_listener);
-    }
-    const PassContext context{edit, features, settings.crossing_guard ? &guard : nullptr};
-
-    const auto analyse_all = [&] {
-        PhaseClock clock(seconds.analysis);
-        analyze_geometry(mesh, settings.metric, geometry);
-        geometry.features = features.as_features(mesh);
-        tracked.mark_current();
-    };
-    const auto analyse_changed = [&] {
-        PhaseClock clock(seconds.analysis);
-        tracked.update(mesh, settings.metric);
-        geometry.features = features.as_features(mesh);
-    };
     const bool closed = mesh.is_closed();
     const double volume = enclosed_volume(mesh);
+    Adaptation adaptation(mesh, fields, settings, workspace, counts.seconds);
     while (counts.passes < settings.max_passes) {
-        if (++counts.passes > 1)
-            analyse_all(); // the last pass's sweeps moved every vertex
-        // Repair first (§4): the density the desired edge length asks for, and no extreme
-        // angles; then optimization (§3) of the repaired mesh.
-        const int32_t splits = timed(seconds.repair, [&] { return splitting_pass(context, settings.repair); });
-        analyse_changed();
-        const int32_t contractions = timed(seconds.repair, [&] {
-            const int32_t made = contraction_pass(context, geometry, settings.repair);
-            edit.compact();
-            return made;
-        });
-        analyse_changed();
-        const int32_t flips = timed(seconds.flipping, [&] { return flipping_pass(context, geometry, settings.flip); });
-        analyse_changed();
-        for (int sweep = 0; sweep < settings.smoothing_sweeps; ++sweep) {
-            if (sweep > 0)
-                analyse_all();
-            PhaseClock clock(seconds.smoothing);
-            std::vector<Vec3> moved =
-                smoothing_sweep(mesh, geometry, settings.denoise, settings.crossing_guard ? &guard : nullptr);
-            edit.move(moved);
-        }
-        counts.splits += splits;
-        counts.contractions += contractions;
-        counts.flips += flips;
         // Settled: after the first pass or two, the changes of a pass dwindle to a few edges
         // in a thousand (on a dynamic surface, the second pass of a call changes about 0.5 %
         // of the vertices, the later ones each half of that), and every pass costs four
         // analyses and two sweeps of the whole mesh. The next call (a dynamic surface is
         // adapted every few steps) picks up what is left.
-        if (splits + contractions + flips <= settled_fraction * mesh.num_vertices())
+        if (adaptation.pass(counts) <= settled_fraction * mesh.num_vertices())
             break;
     }
-    if (closed) {
-        // The offset moves vertices along their normals, not over the surface: their fields
-        // stay with them.
-        PhaseClock clock(seconds.smoothing);
-        restore_enclosed_volume(mesh, features.ranks(), volume);
-    }
-    // New vertices and triangles were appended where they were made: put neighbours next
-    // to each other in memory again, for every loop until the next adaptation. Only what
-    // outlives the call follows.
-    if (counts.splits + counts.contractions > 0) {
-        PhaseClock clock(seconds.repair);
-        edit.detach(tracked);
-        edit.detach(features);
-        edit.order_for_locality();
-    }
-    near_sheet = settings.crossing_guard ? guard.watched() : std::vector<char>();
+    near_sheet = adaptation.finish(counts, closed, volume);
     return counts;
 }
 
