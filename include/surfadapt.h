@@ -233,6 +233,16 @@ const char *sfa_version_string(void);
 int sfa_abi_version(void);
 
 /**
+ * The version of the library loaded as one number, for comparisons: MAJOR * 10000 +
+ * MINOR * 100 + PATCH, e.g. 10203 for 1.2.3 (MINOR and PATCH stay below 100). A host
+ * compiled against this header finds a library at least as new as the header when
+ * `sfa_version_number() >= SFA_VERSION_MAJOR * 10000 + SFA_VERSION_MINOR * 100 +
+ * SFA_VERSION_PATCH`.
+ * @return the version number; the same as sfa_version_string() says.
+ */
+int sfa_version_number(void);
+
+/**
  * Describes a status code.
  * @param status a status code, usually one of ::sfa_status.
  * @return a static, never NULL description of a status code, e.g. "SFA_ERR_MESH: the
@@ -341,6 +351,26 @@ int sfa_set_param(sfa_surface *s, int key, double value);
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, unknown key).
  */
 int sfa_get_param(const sfa_surface *s, int key, double *value);
+
+/**
+ * The ends of the values sfa_set_param() accepts for one key (as zstd's
+ * ZSTD_cParam_getBounds does for its parameters), in the key's unit (see ::sfa_param).
+ * They are the closed hull of the accepted values: where the key's range is open at an
+ * end (a parenthesis in its documentation, e.g. (0, 180) for ::SFA_PARAM_RIDGE_ANGLE),
+ * that end is given but is itself rejected; an end without a bound is INFINITY (the
+ * highest ::SFA_PARAM_EDGE_LENGTH, for one); a flag or whole-number key accepts only the
+ * whole numbers between its ends. The answer is the same for every surface: it comes
+ * from the table sfa_set_param() checks against.
+ *
+ * No surface is involved, so there is no sfa_last_error() message: the status alone
+ * tells what was wrong.
+ * @param key     one of ::sfa_param.
+ * @param lowest  receives the lower end.
+ * @param highest receives the upper end.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (unknown key, `lowest` or `highest` NULL; nothing
+ *         written).
+ */
+int sfa_get_param_bounds(int key, double *lowest, double *highest);
 
 /* ---------------------------------------------------------------- motion */
 
@@ -541,8 +571,9 @@ int sfa_get_field(const sfa_surface *s, int32_t field_id, int32_t capacity, doub
 
 /**
  * The function table of one ABI version, for hosts that `dlopen` the library and
- * resolve only sfa_get_api(). Members follow the order of the functions above;
- * new members are only ever appended, and `struct_size` tells how many there are.
+ * resolve only sfa_get_api(). Members are in the order in which the functions were
+ * added to the library: new members are only ever appended, and `struct_size` tells how
+ * many there are.
  */
 typedef struct sfa_api {
     uint32_t struct_size; /**< sizeof(sfa_api) of the library that filled the table. */
@@ -574,6 +605,8 @@ typedef struct sfa_api {
                              double *aspect_ratios);          /**< sfa_get_vertex_frames() */
     int (*get_ridge_edges)(const sfa_surface *s, int32_t capacity, int32_t *edges, int32_t *count,
                            int32_t index_base);             /**< sfa_get_ridge_edges() */
+    int (*get_param_bounds)(int key, double *lowest, double *highest); /**< sfa_get_param_bounds() */
+    int (*version_number)(void);                              /**< sfa_version_number() */
 } sfa_api;
 
 /**
