@@ -8,8 +8,15 @@
 # Missing Debian packages are installed when run as root, or named otherwise
 # (scripts/ensure-deps.sh).
 
-VERSION   := 1.0.0
-SOVERSION := 1
+# The version is written once, in the header: SFA_VERSION_MAJOR, _MINOR and _PATCH give
+# VERSION (the shared library's file name, pkg-config and CMake), SFA_ABI_VERSION the
+# SONAME's number.
+header_number = $(shell awk '$$1 ~ /^.define$$/ && $$2 == "$(1)" { print $$3 }' include/surfadapt.h)
+VERSION   := $(call header_number,SFA_VERSION_MAJOR).$(call header_number,SFA_VERSION_MINOR).$(call header_number,SFA_VERSION_PATCH)
+SOVERSION := $(call header_number,SFA_ABI_VERSION)
+ifneq ($(shell echo '$(VERSION) $(SOVERSION)' | grep -Ex '[0-9]+[.][0-9]+[.][0-9]+ [0-9]+'),$(VERSION) $(SOVERSION))
+$(error include/surfadapt.h must define SFA_VERSION_MAJOR, SFA_VERSION_MINOR, SFA_VERSION_PATCH and SFA_ABI_VERSION as whole numbers, one per line; read version "$(VERSION)", ABI "$(SOVERSION)")
+endif
 PREFIX    ?= /usr/local
 DESTDIR   ?=
 

@@ -57,6 +57,16 @@ export PKG_CONFIG_LIBDIR PKG_CONFIG_PATH PKG_CONFIG_SYSROOT_DIR
 flags=$(pkg-config --cflags --libs surfadapt) || fail "pkg-config --cflags --libs surfadapt"
 echo "ok - pkg-config --cflags --libs surfadapt: $flags"
 
+# The version is the installed header's, in pkg-config and in the CMake version file.
+header_version=$(awk '$1 == "#define" && $2 ~ /^SFA_VERSION_(MAJOR|MINOR|PATCH)$/ { v = v sep $3; sep = "." } END { print v }' \
+  "$root/include/surfadapt.h")
+pc_version=$(pkg-config --modversion surfadapt)
+[ "$pc_version" = "$header_version" ] ||
+  fail "pkg-config --modversion gives '$pc_version', the installed header's version is '$header_version'"
+grep -qx "set(PACKAGE_VERSION \"$header_version\")" "$root/lib/cmake/surfadapt/surfadaptConfigVersion.cmake" ||
+  fail "surfadaptConfigVersion.cmake does not carry the header's version $header_version"
+echo "ok - pkg-config and CMake carry the header's version $header_version"
+
 # shellcheck disable=SC2086 # flags are a list of words
 $cc tests/install/host.c -o "$work/host" $flags -lm || fail "compile and link the host against the shared library"
 LD_LIBRARY_PATH=$root/lib "$work/host" || fail "run the host linked against the shared library"
