@@ -6,7 +6,8 @@
 #                   line, sanitizers); what CI runs
 #   make bench      benchmarks, one JSON line per case
 #   make doc        the HTML reference (Doxygen; warnings are errors)
-#   make install    PREFIX=/usr/local DESTDIR= : header, libraries, .mod, pkg-config, CMake
+#   make install    PREFIX=/usr/local DESTDIR= : header, libraries, .mod, tool, pkg-config, CMake
+#   make uninstall  PREFIX=/usr/local DESTDIR= : removes exactly what make install put there
 # Missing Debian packages are installed when run as root, or named otherwise
 # (scripts/ensure-deps.sh).
 
@@ -71,7 +72,7 @@ BENCHES          := $(patsubst bench/%.c,build/bench/%,$(sort $(wildcard bench/*
 
 TEST_RPATH := -Wl,-rpath,'$$ORIGIN/../../lib'
 
-.PHONY: all deps deps-check deps-doc test check demo bench doc install clean abi-check abi-baseline
+.PHONY: all deps deps-check deps-doc test check demo bench doc install uninstall clean abi-check abi-baseline
 .DEFAULT_GOAL := all
 # Keep object files of pattern-built programs, so that rebuilds are incremental.
 .SECONDARY:
@@ -212,8 +213,11 @@ doc: deps-doc
 	doxygen doc/Doxyfile
 
 # ------------------------------------------------------------------ install
+# Both scripts take the list of what is installed from scripts/install-manifest.sh.
 install: all
 	@scripts/install.sh "$(DESTDIR)" "$(PREFIX)" "$(VERSION)" "$(SOVERSION)"
+uninstall:
+	@scripts/uninstall.sh "$(DESTDIR)" "$(PREFIX)" "$(VERSION)" "$(SOVERSION)"
 
 clean:
 	rm -rf build lib bin
