@@ -72,6 +72,9 @@ enum sfa_status {
                                The surface is still as it was. */
 };
 
+/* The last sentence of each key's documentation below ("Unit, range; default value.") is
+   worded exactly as the library's range table and its messages word it
+   (src/adapt/parameters.cpp); tests/unit/unit_constant_lists.cpp fails when they differ. */
 /**
  * Keys of the tunable parameters, all of them `double`.
  *
@@ -79,91 +82,99 @@ enum sfa_status {
  * desired edge length l (::SFA_PARAM_EDGE_LENGTH), so that they follow l.
  * Greek letters refer to the paper (§3.1 and §4.3); the defaults are the paper's.
  * Parameters survive sfa_set_mesh().
+ *
+ * The last sentence of each key gives its unit, the values sfa_set_param() accepts and
+ * its default, e.g. "Degrees, in (0, 60]; default 15.": a parenthesis marks an end that
+ * is not itself accepted, a bracket one that is; "a flag" accepts 0 and 1 only, "a whole
+ * number" no fractions. sfa_get_param_bounds() gives the ends at run time.
  */
 enum sfa_param {
-    /** Desired edge length l, in length units, >= 0. 0 (the default) means the mean
-        edge length of the mesh last given to sfa_set_mesh(). */
+    /** Desired edge length l. 0 means the mean edge length of the mesh last given to
+        sfa_set_mesh(). Length units, >= 0; default 0. */
     SFA_PARAM_EDGE_LENGTH = 0,
-    /** 1 (default): the paper's anisotropic adaptation; 0: isotropic adaptation with
-        the same operations (identity metric), for comparison. */
+    /** 1: the paper's anisotropic adaptation; 0: isotropic adaptation with the same
+        operations (identity metric), for comparison. A flag, 0 or 1; default 1. */
     SFA_PARAM_ANISOTROPIC = 1,
-    /** Ridge threshold chi_c on lambda2/lambda1 as the angle f(chi) = 2 atan(sqrt(chi)),
-        degrees in (0, 180); default 45 (§3.1). A vertex whose quadric has
-        lambda2/lambda1 >= chi_c is a feature vertex. */
+    /** Ridge threshold chi_c on lambda2/lambda1 as the angle f(chi) = 2 atan(sqrt(chi))
+        (§3.1). A vertex whose quadric has lambda2/lambda1 >= chi_c is a feature vertex.
+        Degrees, in (0, 180); default 45. */
     SFA_PARAM_RIDGE_ANGLE = 2,
-    /** Corner threshold chi_r on lambda3/lambda1 as an angle, degrees in (0, 180);
-        default 20 (§3.1). A vertex with lambda3/lambda1 >= chi_r is a corner. */
+    /** Corner threshold chi_r on lambda3/lambda1 as an angle (§3.1). A vertex with
+        lambda3/lambda1 >= chi_r is a corner. Degrees, in (0, 180); default 20. */
     SFA_PARAM_CORNER_ANGLE = 3,
-    /** Lower eigenvalue bound psi_l = lambda1 tan^2(theta/2) of the metric (eq. 12),
-        as the angle theta in degrees, (0, 180); default 8 (§4.3: tan^2(4 deg)). */
+    /** Lower eigenvalue bound psi_l = lambda1 tan^2(theta/2) of the metric (eq. 12), as
+        the angle theta; the default is §4.3's tan^2(4 deg). Degrees, in (0, 180);
+        default 8. */
     SFA_PARAM_METRIC_MIN_ANGLE = 4,
-    /** Upper eigenvalue bound psi_u of the metric (eq. 12) as an angle, degrees,
-        (0, 180); default 30 (§4.3: tan^2(15 deg)). Must exceed ::SFA_PARAM_METRIC_MIN_ANGLE
-        when used. */
+    /** Upper eigenvalue bound psi_u of the metric (eq. 12) as an angle; the default is
+        §4.3's tan^2(15 deg). Must exceed ::SFA_PARAM_METRIC_MIN_ANGLE when used.
+        Degrees, in (0, 180); default 30. */
     SFA_PARAM_METRIC_MAX_ANGLE = 5,
     /** L / l: an edge longer than L that is the longest of its triangles is split
-        ("absolute longness", §4.1); > 0, default 1.5. */
+        ("absolute longness", §4.1). A ratio to l, > 0; default 1.5. */
     SFA_PARAM_SPLIT_LENGTH_RATIO = 6,
     /** s / l: relative-longness splitting (§4.1) only where the shortest edge of the
-        incident triangles is at least s; > 0, default sqrt(psi_l/psi_u) =
-        tan(4 deg)/tan(15 deg) = 0.2610 (§4.3). */
+        incident triangles is at least s; the default is §4.3's sqrt(psi_l/psi_u).
+        A ratio to l, > 0; default tan(4 deg)/tan(15 deg) = 0.2610. */
     SFA_PARAM_SPLIT_SHORTEST_RATIO = 7,
-    /** S / l: "absolute small triangle" contraction threshold (§4.2); > 0,
-        default R = 0.5 (§4.3: S = R l). */
+    /** S / l: "absolute small triangle" contraction threshold (§4.2); the default is
+        §4.3's S = R l. A ratio to l, > 0; default 0.5. */
     SFA_PARAM_CONTRACT_LENGTH_RATIO = 8,
-    /** r: "relative shortness" contraction ratio (§4.2); in (0, 1), default 0.1. */
+    /** r: "relative shortness" contraction ratio (§4.2). A ratio, in (0, 1); default 0.1. */
     SFA_PARAM_CONTRACT_SHORT_RATIO = 9,
-    /** R: "relative small triangle" contraction ratio (§4.2); in (0, 1), default 0.5. */
+    /** R: "relative small triangle" contraction ratio (§4.2). A ratio, in (0, 1);
+        default 0.5. */
     SFA_PARAM_CONTRACT_SMALL_RATIO = 10,
-    /** theta_s: "absolute small angle" contraction threshold (§4.2), degrees in
-        (0, 60]; default 15 (§4.3). */
+    /** theta_s: "absolute small angle" contraction threshold (§4.2, §4.3). Degrees,
+        in (0, 60]; default 15. */
     SFA_PARAM_SMALL_ANGLE = 11,
-    /** theta_l: "relative longness" splitting threshold (§4.1), degrees in [60, 180);
-        default 160 (§4.3). */
+    /** theta_l: "relative longness" splitting threshold (§4.1, §4.3). Degrees,
+        in [60, 180); default 160. */
     SFA_PARAM_LARGE_ANGLE = 12,
     /** Fraction of the time to the first fold that sfa_move() and sfa_advect() take
-        at most; in (0, 1], default 0.5. See sfa_move(). */
+        at most; see sfa_move(). A fraction, in (0, 1]; default 0.5. */
     SFA_PARAM_FOLD_SAFETY = 13,
-    /** What sfa_set_mesh() does with vertices that no triangle uses: 0 (default)
-        rejects the mesh with ::SFA_ERR_MESH naming the first one; 1 drops them and
-        keeps the other vertices in their order (so vertex i of the result is the
-        i-th referenced vertex of the input). */
+    /** What sfa_set_mesh() does with vertices that no triangle uses: 0 rejects the mesh
+        with ::SFA_ERR_MESH naming the first one; 1 drops them and keeps the other
+        vertices in their order (so vertex i of the result is the i-th referenced vertex
+        of the input). A flag, 0 or 1; default 0. */
     SFA_PARAM_DROP_UNREFERENCED = 14,
     /** Feature detection safeguard: a vertex where a ridge curve turns by more than this
-        angle (degrees, in (0, 180); default 40) is a corner, so that ridge vertices lie on
-        curves that are locally straight or gently bent. */
+        angle is a corner, so that ridge vertices lie on curves that are locally straight
+        or gently bent. Degrees, in (0, 180); default 40. */
     SFA_PARAM_RIDGE_TURN_ANGLE = 15,
     /** Anisotropic edge flipping (§3.3) changes the surface only where it is nearly flat:
         an edge is flipped only if the angle between the normals of its two triangles, and
-        of the two triangles after the flip, is at most this (degrees, in (0, 180);
-        default 20). Ridge and boundary edges are never flipped. */
+        of the two triangles after the flip, is at most this. Ridge and boundary edges are
+        never flipped. Degrees, in (0, 180); default 20. */
     SFA_PARAM_FLIP_DIHEDRAL_ANGLE = 16,
-    /** Threads of the per-vertex and per-edge loops (OpenMP): 0 (default) uses OpenMP's
-        default (OMP_NUM_THREADS, else every core); n >= 1 uses at most n, so that an MPI
-        host can keep one thread per rank. A whole number. Results never depend on it. */
+    /** Threads of the per-vertex and per-edge loops (OpenMP): 0 uses OpenMP's default
+        (OMP_NUM_THREADS, else every core); n >= 1 uses at most n, so that an MPI host can
+        keep one thread per rank. Results never depend on it. Threads, a whole number
+        in [0, 4096]; default 0. */
     SFA_PARAM_THREADS = 17,
-    /** Denoising weight w in [0, 1] (paper §5.1, §5.2.2), default 0 (off). Each smoothing
-        sweep (sfa_smooth(), and those of sfa_adapt()) then also moves every smooth vertex
+    /** Denoising weight w (paper §5.1, §5.2.2); 0 is off. Each smoothing sweep
+        (sfa_smooth(), and those of sfa_adapt()) then also moves every smooth vertex
         along its normal n by w/4 n.(U_v - mean of U_q over its neighbours q), with U the
         umbrella vector (mean of the neighbours minus the vertex): a step of bi-Laplacian
         normal diffusion, which flattens jagged fans (noise at the scale of an edge) and
         barely moves smoothly curved ones; features never move. On a closed surface the
         enclosed volume is restored after each sweep, so the motion removes noise without
         shrinking the body; an open surface is not corrected. For flows that grow noise,
-        like the second half of the Enright test. */
+        like the second half of the Enright test. A weight, in [0, 1]; default 0. */
     SFA_PARAM_DENOISE = 18,
-    /** The most passes of repair and optimization one sfa_adapt() call makes, a whole
-        number in [1, 100], default 8; fewer if a pass changes the connectivity around at
-        most 1 in 100 vertices. A host that adapts every few steps of a flow sets 1: the
-        second pass of a call changes only about 1 in 200 vertices but costs as much as the
-        first, and what one pass leaves is picked up by the next call. */
+    /** The most passes of repair and optimization one sfa_adapt() call makes; fewer if a
+        pass changes the connectivity around at most 1 in 100 vertices. A host that adapts
+        every few steps of a flow sets 1: the second pass of a call changes only about 1 in
+        200 vertices but costs as much as the first, and what one pass leaves is picked up
+        by the next call. Passes, a whole number in [1, 100]; default 8. */
     SFA_PARAM_ADAPT_PASSES = 19,
-    /** 1 (default): sfa_adapt() and sfa_smooth() do not pass the surface through itself
-        where a sheet is thinner than an edge (see sfa_adapt()); 0: they do not check. The
-        check costs little where the surface is nowhere thin (finding the thin places, about
+    /** 1: sfa_adapt() and sfa_smooth() do not pass the surface through itself where a
+        sheet is thinner than an edge (see sfa_adapt()); 0: they do not check. The check
+        costs little where the surface is nowhere thin (finding the thin places, about
         3 % of an adaptation), and up to about 10 % of the adaptation time where much of it
         is (the Enright test at its most stretched). A host whose surface cannot thin out
-        may set 0. */
+        may set 0. A flag, 0 or 1; default 1. */
     SFA_PARAM_CROSSING_GUARD = 20
 };
 
@@ -231,6 +242,16 @@ const char *sfa_version_string(void);
 
 /** @return ::SFA_ABI_VERSION of the library loaded (which is 1). */
 int sfa_abi_version(void);
+
+/**
+ * The version of the library loaded as one number, for comparisons: MAJOR * 10000 +
+ * MINOR * 100 + PATCH, e.g. 10203 for 1.2.3 (MINOR and PATCH stay below 100). A host
+ * compiled against this header finds a library at least as new as the header when
+ * `sfa_version_number() >= SFA_VERSION_MAJOR * 10000 + SFA_VERSION_MINOR * 100 +
+ * SFA_VERSION_PATCH`.
+ * @return the version number; the same as sfa_version_string() says.
+ */
+int sfa_version_number(void);
 
 /**
  * Describes a status code.
@@ -341,6 +362,26 @@ int sfa_set_param(sfa_surface *s, int key, double value);
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, unknown key).
  */
 int sfa_get_param(const sfa_surface *s, int key, double *value);
+
+/**
+ * The ends of the values sfa_set_param() accepts for one key (as zstd's
+ * ZSTD_cParam_getBounds does for its parameters), in the key's unit (see ::sfa_param).
+ * They are the closed hull of the accepted values: where the key's range is open at an
+ * end (a parenthesis in its documentation, e.g. (0, 180) for ::SFA_PARAM_RIDGE_ANGLE),
+ * that end is given but is itself rejected; an end without a bound is INFINITY (the
+ * highest ::SFA_PARAM_EDGE_LENGTH, for one); a flag or whole-number key accepts only the
+ * whole numbers between its ends. The answer is the same for every surface: it comes
+ * from the table sfa_set_param() checks against.
+ *
+ * No surface is involved, so there is no sfa_last_error() message: the status alone
+ * tells what was wrong.
+ * @param key     one of ::sfa_param.
+ * @param lowest  receives the lower end.
+ * @param highest receives the upper end.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (unknown key, `lowest` or `highest` NULL; nothing
+ *         written).
+ */
+int sfa_get_param_bounds(int key, double *lowest, double *highest);
 
 /* ---------------------------------------------------------------- motion */
 
@@ -541,8 +582,9 @@ int sfa_get_field(const sfa_surface *s, int32_t field_id, int32_t capacity, doub
 
 /**
  * The function table of one ABI version, for hosts that `dlopen` the library and
- * resolve only sfa_get_api(). Members follow the order of the functions above;
- * new members are only ever appended, and `struct_size` tells how many there are.
+ * resolve only sfa_get_api(). Members are in the order in which the functions were
+ * added to the library: new members are only ever appended, and `struct_size` tells how
+ * many there are.
  */
 typedef struct sfa_api {
     uint32_t struct_size; /**< sizeof(sfa_api) of the library that filled the table. */
@@ -574,6 +616,8 @@ typedef struct sfa_api {
                              double *aspect_ratios);          /**< sfa_get_vertex_frames() */
     int (*get_ridge_edges)(const sfa_surface *s, int32_t capacity, int32_t *edges, int32_t *count,
                            int32_t index_base);             /**< sfa_get_ridge_edges() */
+    int (*get_param_bounds)(int key, double *lowest, double *highest); /**< sfa_get_param_bounds() */
+    int (*version_number)(void);                              /**< sfa_version_number() */
 } sfa_api;
 
 /**

@@ -75,10 +75,10 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_MEASURE_SECONDS_REPAIR = 12
   integer(c_int), parameter, public :: SFA_MEASURE_SELF_INTERSECTIONS = 13
 
-  public :: sfa_version_string, sfa_abi_version, sfa_status_string
+  public :: sfa_version_string, sfa_abi_version, sfa_version_number, sfa_status_string
   public :: sfa_create, sfa_destroy, sfa_last_error
   public :: sfa_set_mesh, sfa_get_counts, sfa_get_mesh
-  public :: sfa_set_param, sfa_get_param
+  public :: sfa_set_param, sfa_get_param, sfa_get_param_bounds
   public :: sfa_set_velocities, sfa_move, sfa_advect
   public :: sfa_smooth, sfa_adapt
   public :: sfa_get_feature_ranks, sfa_measure
@@ -110,6 +110,12 @@ module surfadapt
       import :: c_int
       integer(c_int) :: sfa_abi_version
     end function sfa_abi_version
+
+    !> MAJOR * 10000 + MINOR * 100 + PATCH of the library loaded.
+    function sfa_version_number() bind(C, name='sfa_version_number')
+      import :: c_int
+      integer(c_int) :: sfa_version_number
+    end function sfa_version_number
 
     !> A static, never null C string describing a status code.
     function sfa_status_string(status) bind(C, name='sfa_status_string')
@@ -181,6 +187,17 @@ module surfadapt
       real(c_double), intent(out) :: value
       integer(c_int) :: sfa_get_param
     end function sfa_get_param
+
+    !> The ends [lowest, highest] of the values sfa_set_param accepts for key, in its unit;
+    !> an end that the key's range leaves open is given but not itself accepted, and an
+    !> unbounded end is +infinity (ieee_is_finite tells). No handle, so no error message:
+    !> an unknown key gives SFA_ERR_ARGUMENT and leaves lowest and highest undefined.
+    function sfa_get_param_bounds(key, lowest, highest) bind(C, name='sfa_get_param_bounds')
+      import :: c_int, c_double
+      integer(c_int), value :: key
+      real(c_double), intent(out) :: lowest, highest
+      integer(c_int) :: sfa_get_param_bounds
+    end function sfa_get_param_bounds
 
     function sfa_set_velocities(s, vel) bind(C, name='sfa_set_velocities')
       import :: c_int, c_double, c_ptr

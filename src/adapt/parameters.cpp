@@ -8,76 +8,37 @@
 namespace sfa {
 namespace {
 
-enum class Kind { at_least, open_interval, left_open, right_open, closed_interval, flag, whole_number };
-
-struct Spec {
-    const char *name;
-    double default_value;
-    Kind kind;
-    double lo, hi;
-};
-
 constexpr double pi = 3.14159265358979323846;
 constexpr double degrees = pi / 180;
 
-// Indexed by Param. The angles of §3.1 are given as f(chi) = 2 atan(sqrt(chi)).
-const Spec specs[] = {
-    {"SFA_PARAM_EDGE_LENGTH", 0, Kind::at_least, 0, 0},
-    {"SFA_PARAM_ANISOTROPIC", 1, Kind::flag, 0, 1},
-    {"SFA_PARAM_RIDGE_ANGLE", 45, Kind::open_interval, 0, 180},
-    {"SFA_PARAM_CORNER_ANGLE", 20, Kind::open_interval, 0, 180},
-    {"SFA_PARAM_METRIC_MIN_ANGLE", 8, Kind::open_interval, 0, 180},
-    {"SFA_PARAM_METRIC_MAX_ANGLE", 30, Kind::open_interval, 0, 180},
-    {"SFA_PARAM_SPLIT_LENGTH_RATIO", 1.5, Kind::open_interval, 0, INFINITY},
-    // §4.3: s = l sqrt(psi_l / psi_u) with psi = lambda1 tan^2(theta/2), theta = 8 and 30 degrees.
-    {"SFA_PARAM_SPLIT_SHORTEST_RATIO", 0, Kind::open_interval, 0, INFINITY},
-    {"SFA_PARAM_CONTRACT_LENGTH_RATIO", 0.5, Kind::open_interval, 0, INFINITY},
-    {"SFA_PARAM_CONTRACT_SHORT_RATIO", 0.1, Kind::open_interval, 0, 1},
-    {"SFA_PARAM_CONTRACT_SMALL_RATIO", 0.5, Kind::open_interval, 0, 1},
-    {"SFA_PARAM_SMALL_ANGLE", 15, Kind::left_open, 0, 60},
-    {"SFA_PARAM_LARGE_ANGLE", 160, Kind::right_open, 60, 180},
-    {"SFA_PARAM_FOLD_SAFETY", 0.5, Kind::left_open, 0, 1},
-    {"SFA_PARAM_DROP_UNREFERENCED", 0, Kind::flag, 0, 1},
-    {"SFA_PARAM_RIDGE_TURN_ANGLE", 40, Kind::open_interval, 0, 180},
-    {"SFA_PARAM_FLIP_DIHEDRAL_ANGLE", 20, Kind::open_interval, 0, 180},
-    {"SFA_PARAM_THREADS", 0, Kind::whole_number, 0, 4096},
-    {"SFA_PARAM_DENOISE", 0, Kind::closed_interval, 0, 1},
-    {"SFA_PARAM_ADAPT_PASSES", 8, Kind::whole_number, 1, 100},
-    {"SFA_PARAM_CROSSING_GUARD", 1, Kind::flag, 0, 1},
+// Indexed by Param. The angles of §3.1 are given as f(chi) = 2 atan(sqrt(chi)). These are
+// the checks of sfa_set_param and the answers of sfa_get_param_bounds.
+const ParamSpec specs[] = {
+    {"SFA_PARAM_EDGE_LENGTH", "length units", 0, RangeKind::at_least, 0, INFINITY},
+    {"SFA_PARAM_ANISOTROPIC", "a flag", 1, RangeKind::flag, 0, 1},
+    {"SFA_PARAM_RIDGE_ANGLE", "degrees", 45, RangeKind::open_interval, 0, 180},
+    {"SFA_PARAM_CORNER_ANGLE", "degrees", 20, RangeKind::open_interval, 0, 180},
+    {"SFA_PARAM_METRIC_MIN_ANGLE", "degrees", 8, RangeKind::open_interval, 0, 180},
+    {"SFA_PARAM_METRIC_MAX_ANGLE", "degrees", 30, RangeKind::open_interval, 0, 180},
+    {"SFA_PARAM_SPLIT_LENGTH_RATIO", "a ratio to l", 1.5, RangeKind::open_interval, 0, INFINITY},
+    // §4.3: s = l sqrt(psi_l / psi_u) with psi = lambda1 tan^2(theta/2), theta = 8 and 30
+    // degrees; the constructor computes it.
+    {"SFA_PARAM_SPLIT_SHORTEST_RATIO", "a ratio to l", NAN, RangeKind::open_interval, 0, INFINITY},
+    {"SFA_PARAM_CONTRACT_LENGTH_RATIO", "a ratio to l", 0.5, RangeKind::open_interval, 0, INFINITY},
+    {"SFA_PARAM_CONTRACT_SHORT_RATIO", "a ratio", 0.1, RangeKind::open_interval, 0, 1},
+    {"SFA_PARAM_CONTRACT_SMALL_RATIO", "a ratio", 0.5, RangeKind::open_interval, 0, 1},
+    {"SFA_PARAM_SMALL_ANGLE", "degrees", 15, RangeKind::left_open, 0, 60},
+    {"SFA_PARAM_LARGE_ANGLE", "degrees", 160, RangeKind::right_open, 60, 180},
+    {"SFA_PARAM_FOLD_SAFETY", "a fraction", 0.5, RangeKind::left_open, 0, 1},
+    {"SFA_PARAM_DROP_UNREFERENCED", "a flag", 0, RangeKind::flag, 0, 1},
+    {"SFA_PARAM_RIDGE_TURN_ANGLE", "degrees", 40, RangeKind::open_interval, 0, 180},
+    {"SFA_PARAM_FLIP_DIHEDRAL_ANGLE", "degrees", 20, RangeKind::open_interval, 0, 180},
+    {"SFA_PARAM_THREADS", "threads", 0, RangeKind::whole_number, 0, 4096},
+    {"SFA_PARAM_DENOISE", "a weight", 0, RangeKind::closed_interval, 0, 1},
+    {"SFA_PARAM_ADAPT_PASSES", "passes", 8, RangeKind::whole_number, 1, 100},
+    {"SFA_PARAM_CROSSING_GUARD", "a flag", 1, RangeKind::flag, 0, 1},
 };
 static_assert(sizeof specs / sizeof specs[0] == static_cast<size_t>(Param::count), "one spec per key");
-
-bool in_range(const Spec &spec, double v)
-{
-    switch (spec.kind) {
-    case Kind::at_least: return v >= spec.lo;
-    case Kind::open_interval: return v > spec.lo && v < spec.hi;
-    case Kind::left_open: return v > spec.lo && v <= spec.hi;
-    case Kind::right_open: return v >= spec.lo && v < spec.hi;
-    case Kind::closed_interval: return v >= spec.lo && v <= spec.hi;
-    case Kind::flag: return v == 0 || v == 1;
-    case Kind::whole_number: return v >= spec.lo && v <= spec.hi && v == std::floor(v);
-    }
-    return false;
-}
-
-void describe_range(const Spec &spec, char *out, size_t size)
-{
-    switch (spec.kind) {
-    case Kind::at_least: std::snprintf(out, size, ">= %g", spec.lo); break;
-    case Kind::open_interval:
-        if (std::isinf(spec.hi))
-            std::snprintf(out, size, "> %g", spec.lo);
-        else
-            std::snprintf(out, size, "in (%g, %g)", spec.lo, spec.hi);
-        break;
-    case Kind::left_open: std::snprintf(out, size, "in (%g, %g]", spec.lo, spec.hi); break;
-    case Kind::right_open: std::snprintf(out, size, "in [%g, %g)", spec.lo, spec.hi); break;
-    case Kind::closed_interval: std::snprintf(out, size, "in [%g, %g]", spec.lo, spec.hi); break;
-    case Kind::flag: std::snprintf(out, size, "0 or 1"); break;
-    case Kind::whole_number: std::snprintf(out, size, "a whole number in [%g, %g]", spec.lo, spec.hi); break;
-    }
-}
 
 } // namespace
 
@@ -88,9 +49,11 @@ Parameters::Parameters()
     value_[static_cast<int>(Param::split_shortest_ratio)] = std::tan(4 * degrees) / std::tan(15 * degrees);
 }
 
+bool Parameters::is_key(int key) { return key >= 0 && key < static_cast<int>(Param::count); }
+
 void Parameters::require_key(int key)
 {
-    if (key >= 0 && key < static_cast<int>(Param::count))
+    if (is_key(key))
         return;
     char message[120];
     std::snprintf(message, sizeof message, "unknown parameter key %d (keys are 0 to %d, enum sfa_param)", key,
@@ -98,15 +61,54 @@ void Parameters::require_key(int key)
     throw Error(Status::argument, message);
 }
 
+const ParamSpec &Parameters::spec(int key) { return specs[key]; }
+
+bool Parameters::accepts(const ParamSpec &spec, double v)
+{
+    if (!std::isfinite(v))
+        return false;
+    const double lo = spec.lowest, hi = spec.highest;
+    switch (spec.kind) {
+    case RangeKind::at_least: return v >= lo;
+    case RangeKind::open_interval: return v > lo && v < hi;
+    case RangeKind::left_open: return v > lo && v <= hi;
+    case RangeKind::right_open: return v >= lo && v < hi;
+    case RangeKind::closed_interval: return v >= lo && v <= hi;
+    case RangeKind::flag: return v == 0 || v == 1;
+    case RangeKind::whole_number: return v >= lo && v <= hi && v == std::floor(v);
+    }
+    return false;
+}
+
+std::string Parameters::describe_range(const ParamSpec &spec)
+{
+    char text[80];
+    const double lo = spec.lowest, hi = spec.highest;
+    switch (spec.kind) {
+    case RangeKind::at_least: std::snprintf(text, sizeof text, ">= %g", lo); break;
+    case RangeKind::open_interval:
+        if (std::isinf(hi))
+            std::snprintf(text, sizeof text, "> %g", lo);
+        else
+            std::snprintf(text, sizeof text, "in (%g, %g)", lo, hi);
+        break;
+    case RangeKind::left_open: std::snprintf(text, sizeof text, "in (%g, %g]", lo, hi); break;
+    case RangeKind::right_open: std::snprintf(text, sizeof text, "in [%g, %g)", lo, hi); break;
+    case RangeKind::closed_interval: std::snprintf(text, sizeof text, "in [%g, %g]", lo, hi); break;
+    case RangeKind::flag: std::snprintf(text, sizeof text, "0 or 1"); break;
+    case RangeKind::whole_number: std::snprintf(text, sizeof text, "a whole number in [%g, %g]", lo, hi); break;
+    }
+    return text;
+}
+
 void Parameters::set(int key, double value)
 {
     require_key(key);
-    char message[256];
-    const Spec &spec = specs[key];
-    if (!std::isfinite(value) || !in_range(spec, value)) {
-        char range[64];
-        describe_range(spec, range, sizeof range);
-        std::snprintf(message, sizeof message, "%s must be %s, got %g", spec.name, range, value);
+    const ParamSpec &s = specs[key];
+    if (!accepts(s, value)) {
+        char message[256];
+        std::snprintf(message, sizeof message, "%s (%s) must be %s, got %g", s.name, s.unit,
+                      describe_range(s).c_str(), value);
         throw Error(Status::argument, message);
     }
     value_[key] = value;

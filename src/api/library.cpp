@@ -15,6 +15,14 @@ SFA_EXPORT const char *sfa_version_string(void)
 
 SFA_EXPORT int sfa_abi_version(void) { return SFA_ABI_VERSION; }
 
+// Two decimal digits each for MINOR and PATCH: beyond 99 the number would be ambiguous.
+static_assert(SFA_VERSION_MINOR < 100 && SFA_VERSION_PATCH < 100, "sfa_version_number packs MINOR and PATCH in two digits");
+
+SFA_EXPORT int sfa_version_number(void)
+{
+    return SFA_VERSION_MAJOR * 10000 + SFA_VERSION_MINOR * 100 + SFA_VERSION_PATCH;
+}
+
 SFA_EXPORT const char *sfa_status_string(int status)
 {
     switch (status) {
@@ -79,6 +87,8 @@ SFA_EXPORT const sfa_api *sfa_get_api(uint32_t abi_version)
         sfa_get_field,
         sfa_get_vertex_frames,
         sfa_get_ridge_edges,
+        sfa_get_param_bounds,
+        sfa_version_number,
     };
     return abi_version == 1 ? &table_v1 : nullptr;
 }

@@ -1,4 +1,4 @@
-// Parameters: sfa_set_param, sfa_get_param.
+// Parameters: sfa_set_param, sfa_get_param, sfa_get_param_bounds.
 #include "api/boundary.hpp"
 
 using namespace sfa;
@@ -17,6 +17,18 @@ SFA_EXPORT int sfa_get_param(const sfa_surface *s, int key, double *value)
         Parameters::require_key(key);
         *value = s->params.get(static_cast<Param>(key));
     });
+}
+
+// No handle, so no message: the status alone says what was wrong. The ends come from the
+// table sfa_set_param checks against, so the two cannot disagree.
+SFA_EXPORT int sfa_get_param_bounds(int key, double *lowest, double *highest)
+{
+    if (!lowest || !highest || !Parameters::is_key(key))
+        return SFA_ERR_ARGUMENT;
+    const ParamSpec &spec = Parameters::spec(key);
+    *lowest = spec.lowest;
+    *highest = spec.highest;
+    return SFA_OK;
 }
 
 } // extern "C"

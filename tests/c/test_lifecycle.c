@@ -13,6 +13,15 @@ static void version_matches_macros(void **state)
     assert_int_equal(sfa_abi_version(), 1);
 }
 
+static void version_number_is_the_version_string_as_one_number(void **state)
+{
+    (void)state;
+    assert_int_equal(sfa_version_number(), SFA_VERSION_MAJOR * 10000 + SFA_VERSION_MINOR * 100 + SFA_VERSION_PATCH);
+    int major = -1, minor = -1, patch = -1;
+    assert_int_equal(sscanf(sfa_version_string(), "%d.%d.%d", &major, &minor, &patch), 3);
+    assert_int_equal(sfa_version_number(), major * 10000 + minor * 100 + patch);
+}
+
 static void status_strings_never_null(void **state)
 {
     (void)state;
@@ -116,6 +125,10 @@ static void api_table_is_complete(void **state)
     assert_true(api->measure == sfa_measure);
     assert_true(api->add_field == sfa_add_field);
     assert_true(api->get_field == sfa_get_field);
+    assert_true(api->get_vertex_frames == sfa_get_vertex_frames);
+    assert_true(api->get_ridge_edges == sfa_get_ridge_edges);
+    assert_true(api->get_param_bounds == sfa_get_param_bounds);
+    assert_true(api->version_number == sfa_version_number);
     /* No member left NULL, whatever was added after the ones listed above. */
     const unsigned char *bytes = (const unsigned char *)api;
     for (size_t off = offsetof(sfa_api, version_string); off + sizeof(void (*)(void)) <= api->struct_size;
@@ -142,10 +155,15 @@ static void api_other_versions_absent(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(version_matches_macros),   cmocka_unit_test(status_strings_never_null),
-        cmocka_unit_test(create_and_destroy),       cmocka_unit_test(destroy_null_is_a_noop),
-        cmocka_unit_test(create_null_out),          cmocka_unit_test(last_error_lifecycle),
-        cmocka_unit_test(api_table_is_complete),    cmocka_unit_test(api_other_versions_absent),
+        cmocka_unit_test(version_matches_macros),
+        cmocka_unit_test(version_number_is_the_version_string_as_one_number),
+        cmocka_unit_test(status_strings_never_null),
+        cmocka_unit_test(create_and_destroy),
+        cmocka_unit_test(destroy_null_is_a_noop),
+        cmocka_unit_test(create_null_out),
+        cmocka_unit_test(last_error_lifecycle),
+        cmocka_unit_test(api_table_is_complete),
+        cmocka_unit_test(api_other_versions_absent),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

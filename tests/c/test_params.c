@@ -1,4 +1,4 @@
-/* Parameters: defaults (the paper's), round trips, range checks, survival across meshes. */
+/* Parameters: defaults (the paper's), round trips, range checks, their bounds, survival across meshes. */
 #include "support/testing.h"
 
 static const double pi = 3.14159265358979323846;
@@ -87,6 +87,40 @@ static int invalid_values(int key, double out[4])
     case SFA_PARAM_ADAPT_PASSES: out[0] = 0; out[1] = 2.5; out[2] = 101; return 3;
     case SFA_PARAM_CROSSING_GUARD: out[0] = 0.5; out[1] = 2; out[2] = -1; return 3;
     default: return 0;
+    }
+}
+
+/* The documented range of each key: its ends and whether each end is itself accepted. */
+typedef struct documented_range {
+    double lowest, highest;
+    int lowest_accepted, highest_accepted;
+} documented_range;
+
+static documented_range range_of(int key)
+{
+    switch (key) {
+    case SFA_PARAM_EDGE_LENGTH: return (documented_range){0, INFINITY, 1, 0};
+    case SFA_PARAM_ANISOTROPIC:
+    case SFA_PARAM_DROP_UNREFERENCED:
+    case SFA_PARAM_CROSSING_GUARD: return (documented_range){0, 1, 1, 1};
+    case SFA_PARAM_RIDGE_ANGLE:
+    case SFA_PARAM_CORNER_ANGLE:
+    case SFA_PARAM_METRIC_MIN_ANGLE:
+    case SFA_PARAM_METRIC_MAX_ANGLE:
+    case SFA_PARAM_RIDGE_TURN_ANGLE:
+    case SFA_PARAM_FLIP_DIHEDRAL_ANGLE: return (documented_range){0, 180, 0, 0};
+    case SFA_PARAM_SPLIT_LENGTH_RATIO:
+    case SFA_PARAM_SPLIT_SHORTEST_RATIO:
+    case SFA_PARAM_CONTRACT_LENGTH_RATIO: return (documented_range){0, INFINITY, 0, 0};
+    case SFA_PARAM_CONTRACT_SHORT_RATIO:
+    case SFA_PARAM_CONTRACT_SMALL_RATIO: return (documented_range){0, 1, 0, 0};
+    case SFA_PARAM_SMALL_ANGLE: return (documented_range){0, 60, 0, 1};
+    case SFA_PARAM_LARGE_ANGLE: return (documented_range){60, 180, 1, 0};
+    case SFA_PARAM_FOLD_SAFETY: return (documented_range){0, 1, 0, 1};
+    case SFA_PARAM_THREADS: return (documented_range){0, 4096, 1, 1};
+    case SFA_PARAM_DENOISE: return (documented_range){0, 1, 1, 1};
+    case SFA_PARAM_ADAPT_PASSES: return (documented_range){1, 100, 1, 1};
+    default: return (documented_range){NAN, NAN, 0, 0};
     }
 }
 
@@ -217,6 +251,58 @@ static void kept_across_set_mesh(void **state)
     sfa_destroy(s);
 }
 
+static void bounds_are_the_ends_of_the_documented_range(void **state)
+{
+    (void)state;
+    sfa_surface *s = NULL;
+    assert_int_equal(sfa_create(&s), SFA_OK);
+    for (int key = 0; key < SHAPES_NPARAMS; ++key) {
+        const documented_range want = range_of(key);
+        double lowest = NAN, highest = NAN;
+        assert_int_equal(sfa_get_param_bounds(key, &lowest, &highest), SFA_OK);
+        if (lowest != want.lowest || highest != want.highest)
+            fail_msg("parameter %d: bounds [%.17g, %.17g], documented [%.17g, %.17g]", key, lowest, highest,
+                     want.lowest, want.highest);
+        /* Each end is accepted exactly where the documentation has a bracket, and nothing
+           beyond the ends is. */
+        if ((sfa_set_param(s, key, lowest) == SFA_OK) != want.lowest_accepted)
+            fail_msg("parameter %d: sfa_set_param(lowest = %g) disagrees with the documented range", key, lowest);
+        assert_int_equal(sfa_set_param(s, key, nextafter(lowest, -INFINITY)), SFA_ERR_ARGUMENT);
+        if (isfinite(highest)) {
+            if ((sfa_set_param(s, key, highest) == SFA_OK) != want.highest_accepted)
+                fail_msg("parameter %d: sfa_set_param(highest = %g) disagrees with the documented range", key,
+                         highest);
+            assert_int_equal(sfa_set_param(s, key, nextafter(highest, INFINITY)), SFA_ERR_ARGUMENT);
+        }
+        /* The default lies within the bounds. */
+        sfa_surface *fresh = NULL;
+        double v = NAN;
+        assert_int_equal(sfa_create(&fresh), SFA_OK);
+        assert_int_equal(sfa_get_param(fresh, key, &v), SFA_OK);
+        assert_true(v >= lowest && v <= highest);
+        sfa_destroy(fresh);
+    }
+    sfa_destroy(s);
+}
+
+static void bounds_of_unknown_keys_and_null_pointers(void **state)
+{
+    (void)state;
+    const int keys[] = {-1, SHAPES_NPARAMS, SHAPES_NPARAMS + 1, 1000, INT32_MIN, INT32_MAX};
+    for (size_t i = 0; i < sizeof keys / sizeof keys[0]; ++i) {
+        double lowest = 12345, highest = 54321;
+        assert_int_equal(sfa_get_param_bounds(keys[i], &lowest, &highest), SFA_ERR_ARGUMENT);
+        /* Nothing written on failure. */
+        assert_true(lowest == 12345 && highest == 54321);
+    }
+    double end = 12345;
+    assert_int_equal(sfa_get_param_bounds(SFA_PARAM_RIDGE_ANGLE, NULL, &end), SFA_ERR_ARGUMENT);
+    assert_true(end == 12345);
+    assert_int_equal(sfa_get_param_bounds(SFA_PARAM_RIDGE_ANGLE, &end, NULL), SFA_ERR_ARGUMENT);
+    assert_true(end == 12345);
+    assert_int_equal(sfa_get_param_bounds(SFA_PARAM_RIDGE_ANGLE, NULL, NULL), SFA_ERR_ARGUMENT);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -226,6 +312,8 @@ int main(void)
         cmocka_unit_test(unknown_keys_rejected),
         cmocka_unit_test(null_arguments),
         cmocka_unit_test(kept_across_set_mesh),
+        cmocka_unit_test(bounds_are_the_ends_of_the_documented_range),
+        cmocka_unit_test(bounds_of_unknown_keys_and_null_pointers),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -71,6 +71,7 @@ end module test_support
 program test_surfadapt
   use, intrinsic :: iso_c_binding, only: c_int, c_int32_t, c_double, c_ptr, c_null_ptr, &
        c_associated, c_f_pointer, c_funloc, c_loc, c_sizeof, c_null_funptr
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use surfadapt
   use test_support
   implicit none
@@ -98,7 +99,7 @@ program test_surfadapt
   integer(c_int32_t), allocatable :: tri_out(:, :), ranks(:)
   integer(c_int32_t) :: vranks(nv)
   integer(c_int32_t) :: bad_tri(3, nt), small_tri(3, 1)
-  real(c_double) :: value, volume_before, dt, dt_taken, t0, theta, c, sn
+  real(c_double) :: value, volume_before, dt, dt_taken, t0, theta, c, sn, lowest, highest
   real(c_double) :: vel(3, nv), before(3, nv), expected(3, nv), small_xyz(3, 1)
   real(c_double) :: field(2, nv)
   real(c_double), target :: omega
@@ -113,6 +114,21 @@ program test_surfadapt
        sfa_version() == trim(want_version), 'got "' // sfa_version() // '"')
   call check('sfa_abi_version == SFA_HEADER_ABI_VERSION', &
        sfa_abi_version() == SFA_HEADER_ABI_VERSION)
+  call check('sfa_version_number is MAJOR * 10000 + MINOR * 100 + PATCH', &
+       sfa_version_number() == SFA_VERSION_MAJOR * 10000 + SFA_VERSION_MINOR * 100 + SFA_VERSION_PATCH)
+
+  ! Bounds need no handle: (0, 180) for an angle, [0, +infinity) for the edge length.
+  rc = sfa_get_param_bounds(SFA_PARAM_RIDGE_ANGLE, lowest, highest)
+  call check('sfa_get_param_bounds(SFA_PARAM_RIDGE_ANGLE) gives 0 and 180', rc == SFA_OK .and. &
+       near(lowest, 0.0_c_double, 0.0_c_double) .and. near(highest, 180.0_c_double, 0.0_c_double))
+  rc = sfa_get_param_bounds(SFA_PARAM_EDGE_LENGTH, lowest, highest)
+  call check('sfa_get_param_bounds(SFA_PARAM_EDGE_LENGTH) gives 0 and +infinity', rc == SFA_OK .and. &
+       near(lowest, 0.0_c_double, 0.0_c_double) .and. .not. ieee_is_finite(highest) .and. highest > 0)
+  rc = sfa_get_param_bounds(SFA_PARAM_ADAPT_PASSES, lowest, highest)
+  call check('sfa_get_param_bounds(SFA_PARAM_ADAPT_PASSES) gives 1 and 100', rc == SFA_OK .and. &
+       near(lowest, 1.0_c_double, 0.0_c_double) .and. near(highest, 100.0_c_double, 0.0_c_double))
+  rc = sfa_get_param_bounds(1000_c_int, lowest, highest)
+  call check('sfa_get_param_bounds of an unknown key gives SFA_ERR_ARGUMENT', rc == SFA_ERR_ARGUMENT)
   call check('sfa_status_message(SFA_ERR_MESH) is not empty', &
        len(sfa_status_message(SFA_ERR_MESH)) > 0)
   call check('sfa_status_message of an unknown code is not empty', &
@@ -120,10 +136,10 @@ program test_surfadapt
 
   api = sfa_get_api(int(SFA_HEADER_ABI_VERSION, c_int32_t))
   if (c_associated(api)) then
-    ! The table starts with uint32_t struct_size and abi, then 22 function pointers.
+    ! The table starts with uint32_t struct_size and abi, then 24 function pointers.
     call c_f_pointer(api, api_head, [2])
-    call check('sfa_get_api: struct_size covers the 22 functions', &
-         api_head(1) >= 8 + 22 * c_sizeof(c_null_funptr))
+    call check('sfa_get_api: struct_size covers the 24 functions', &
+         api_head(1) >= 8 + 24 * c_sizeof(c_null_funptr))
     call check('sfa_get_api: abi == SFA_HEADER_ABI_VERSION', api_head(2) == SFA_HEADER_ABI_VERSION)
   else
     call check('sfa_get_api(SFA_HEADER_ABI_VERSION) is not null', .false.)

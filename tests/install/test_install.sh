@@ -2,7 +2,9 @@
 # Installs into a staging tree under build/ with `make install DESTDIR=... PREFIX=...`,
 # checks what was installed, then builds and runs a C host found only through
 # pkg-config, linked against the shared library and, fully static, against the static
-# one (which proves Libs.private). Needs the tree built (`make`).
+# one (which proves Libs.private). Finally `make uninstall` with the same DESTDIR and
+# PREFIX must leave no file or link of ours and keep one that is not. Needs the tree
+# built (`make`).
 # Ends with exactly "install: 1 passed, 0 failed" or "install: 0 passed, 1 failed".
 set -u
 cd "$(dirname "$0")/../.." || exit 1
@@ -21,9 +23,12 @@ fail() {
 
 rm -rf "$work"
 mkdir -p "$work"
-# MAKEFLAGS of an enclosing make would be inherited; the install needs none of them.
-if ! env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL "${MAKE:-make}" --no-print-directory install \
-    DESTDIR="$destdir" PREFIX="$prefix" >"$work/install.log" 2>&1; then
+# MAKEFLAGS of an enclosing make would be inherited; install and uninstall need none of them.
+run_make() { # target log
+  env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL "${MAKE:-make}" --no-print-directory "$1" \
+    DESTDIR="$destdir" PREFIX="$prefix" >"$2" 2>&1
+}
+if ! run_make install "$work/install.log"; then
   cat "$work/install.log"
   fail "make install DESTDIR=$destdir PREFIX=$prefix"
 fi
@@ -57,6 +62,16 @@ export PKG_CONFIG_LIBDIR PKG_CONFIG_PATH PKG_CONFIG_SYSROOT_DIR
 flags=$(pkg-config --cflags --libs surfadapt) || fail "pkg-config --cflags --libs surfadapt"
 echo "ok - pkg-config --cflags --libs surfadapt: $flags"
 
+# The version is the installed header's, in pkg-config and in the CMake version file.
+header_version=$(awk '$1 == "#define" && $2 ~ /^SFA_VERSION_(MAJOR|MINOR|PATCH)$/ { v = v sep $3; sep = "." } END { print v }' \
+  "$root/include/surfadapt.h")
+pc_version=$(pkg-config --modversion surfadapt)
+[ "$pc_version" = "$header_version" ] ||
+  fail "pkg-config --modversion gives '$pc_version', the installed header's version is '$header_version'"
+grep -qx "set(PACKAGE_VERSION \"$header_version\")" "$root/lib/cmake/surfadapt/surfadaptConfigVersion.cmake" ||
+  fail "surfadaptConfigVersion.cmake does not carry the header's version $header_version"
+echo "ok - pkg-config and CMake carry the header's version $header_version"
+
 # shellcheck disable=SC2086 # flags are a list of words
 $cc tests/install/host.c -o "$work/host" $flags -lm || fail "compile and link the host against the shared library"
 LD_LIBRARY_PATH=$root/lib "$work/host" || fail "run the host linked against the shared library"
@@ -68,5 +83,26 @@ $cc -static tests/install/host.c -o "$work/host-static" $static_flags ||
   fail "link the host statically with pkg-config --static --libs ($static_flags)"
 "$work/host-static" || fail "run the statically linked host"
 echo "ok - host linked statically with $static_flags runs"
+
+# Uninstall. The shared directories hold something of another package, which must stay.
+foreign=lib/not-surfadapt.txt
+echo "another package's file" >"$root/$foreign"
+if ! run_make uninstall "$work/uninstall.log"; then
+  cat "$work/uninstall.log"
+  fail "make uninstall DESTDIR=$destdir PREFIX=$prefix"
+fi
+# Whatever install put anywhere under DESTDIR, uninstall must have taken away.
+left=$(cd "$destdir" && find . \( -type f -o -type l \) ! -path "./${prefix#/}/$foreign" | sort)
+[ -z "$left" ] || fail "make uninstall left these behind: $(echo "$left" | tr '\n' ' ')"
+[ -f "$root/$foreign" ] || fail "make uninstall removed $prefix/$foreign, which make install did not put there"
+[ ! -e "$root/lib/cmake/surfadapt" ] || fail "make uninstall left the package's own directory $prefix/lib/cmake/surfadapt"
+echo "ok - make uninstall removed every file and link make install made, and kept $prefix/$foreign"
+
+if run_make uninstall "$work/uninstall-again.log"; then
+  fail "a second make uninstall succeeded although nothing was installed"
+fi
+grep -q "is not installed in" "$work/uninstall-again.log" ||
+  fail "a second make uninstall did not say that nothing was installed: $(cat "$work/uninstall-again.log")"
+echo "ok - a second make uninstall fails: $(grep 'is not installed in' "$work/uninstall-again.log")"
 
 echo "install: 1 passed, 0 failed"

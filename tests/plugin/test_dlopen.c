@@ -127,6 +127,8 @@ int main(int argc, char **argv)
     MEMBER_SET(get_field)
     MEMBER_SET(get_vertex_frames)
     MEMBER_SET(get_ridge_edges)
+    MEMBER_SET(get_param_bounds)
+    MEMBER_SET(version_number)
 #undef MEMBER_SET
     if (!check(all_set, "every member of the table is set")) {
         /* Calling through a NULL member would crash instead of reporting. */
@@ -142,6 +144,21 @@ int main(int argc, char **argv)
                "version_string() matches the header's version macros"))
         printf("  library \"%s\", header \"%s\"\n", version ? version : "(null)", want_version);
     check(api->abi_version() == SFA_ABI_VERSION, "abi_version() == 1");
+    const int want_number = SFA_VERSION_MAJOR * 10000 + SFA_VERSION_MINOR * 100 + SFA_VERSION_PATCH;
+    if (!check(api->version_number() == want_number, "version_number() is MAJOR * 10000 + MINOR * 100 + PATCH"))
+        printf("  library %d, header %d\n", api->version_number(), want_number);
+
+    /* Bounds need no surface: (0, 180) for an angle, [0, infinity) for the edge length. */
+    double lowest = -1, highest = -1;
+    int bounds_rc = api->get_param_bounds(SFA_PARAM_RIDGE_ANGLE, &lowest, &highest);
+    if (!check(bounds_rc == SFA_OK && lowest == 0 && highest == 180, "get_param_bounds(ridge angle) is 0, 180"))
+        printf("  status %d, [%g, %g]\n", bounds_rc, lowest, highest);
+    bounds_rc = api->get_param_bounds(SFA_PARAM_EDGE_LENGTH, &lowest, &highest);
+    if (!check(bounds_rc == SFA_OK && lowest == 0 && isinf(highest) && highest > 0,
+               "get_param_bounds(edge length) is 0, infinity"))
+        printf("  status %d, [%g, %g]\n", bounds_rc, lowest, highest);
+    check(api->get_param_bounds(-1, &lowest, &highest) == SFA_ERR_ARGUMENT,
+          "get_param_bounds of an unknown key gives SFA_ERR_ARGUMENT");
     check(api->status_string(SFA_ERR_MESH) != NULL, "status_string() is not NULL");
 
     sfa_surface *s = NULL;

@@ -13,7 +13,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Number of parameter keys of the API (SFA_PARAM_EDGE_LENGTH .. SFA_PARAM_DENOISE). */
+/* Number of parameter keys of the API (SFA_PARAM_EDGE_LENGTH .. SFA_PARAM_CROSSING_GUARD);
+ * unit_constant_lists fails when enum sfa_param has more or fewer. */
 #define SHAPES_NPARAMS 21
 
 /* [0,1]^3: 8 vertices, 12 triangles, each face split along one diagonal. */

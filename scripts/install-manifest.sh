@@ -1,0 +1,54 @@
+# shellcheck shell=sh
+# What `make install` puts where: sourced by install.sh, which installs these items, and
+# by uninstall.sh, which removes exactly them, so that the two cannot disagree.
+#
+# install_arguments DESTDIR PREFIX VERSION SOVERSION checks the arguments and sets
+# destdir, prefix, root (= DESTDIR/PREFIX), version and soversion. manifest then prints
+# one item per line, TARGET relative to PREFIX (lines starting with # are comments):
+#   file MODE SOURCE TARGET   a copy of SOURCE (relative to the top of the tree)
+#   link POINTS_TO TARGET     a symbolic link
+#   template SOURCE TARGET    SOURCE with @PREFIX@, @VERSION@ and @SOVERSION@ filled in
+# own_directories lists the directories, relative to PREFIX, that only this package uses.
+
+# The variables it sets are for the script that sources this file.
+# shellcheck disable=SC2034
+install_arguments() {
+  if [ $# -ne 4 ]; then
+    echo "usage: $(basename "$0") DESTDIR PREFIX VERSION SOVERSION   (DESTDIR may be empty)" >&2
+    exit 2
+  fi
+  destdir=$1
+  prefix=$2
+  version=$3
+  soversion=$4
+  case $prefix in
+    /*) ;;
+    *) echo "$(basename "$0"): PREFIX must be an absolute path, got '$prefix'" >&2; exit 2 ;;
+  esac
+  # Generated files name PREFIX, never DESTDIR: DESTDIR is only a staging root.
+  prefix=${prefix%/}
+  root=$destdir$prefix
+}
+
+manifest() {
+  real=libsurfadapt.so.$version
+  cat <<EOF
+file 644 include/surfadapt.h include/surfadapt.h
+file 755 lib/$real lib/$real
+link $real lib/libsurfadapt.so.$soversion
+link libsurfadapt.so.$soversion lib/libsurfadapt.so
+file 644 lib/libsurfadapt.a lib/libsurfadapt.a
+file 644 lib/libsurfadapt_fortran.a lib/libsurfadapt_fortran.a
+# Beside the C header, so that one -I serves C and Fortran hosts.
+file 644 lib/fortran/surfadapt.mod include/surfadapt.mod
+# Its RUNPATH \$ORIGIN/../lib finds the library in the installed tree as in the build tree.
+file 755 bin/surfadapt bin/surfadapt
+template cmake/surfadapt.pc.in lib/pkgconfig/surfadapt.pc
+template cmake/surfadaptConfig.cmake.in lib/cmake/surfadapt/surfadaptConfig.cmake
+template cmake/surfadaptConfigVersion.cmake.in lib/cmake/surfadapt/surfadaptConfigVersion.cmake
+EOF
+}
+
+own_directories() {
+  echo lib/cmake/surfadapt
+}
