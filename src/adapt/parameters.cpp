@@ -1,5 +1,6 @@
 #include "adapt/parameters.hpp"
 
+#include "geometry/angles.hpp"
 #include "mesh/error.hpp"
 
 #include <cmath>
@@ -7,9 +8,6 @@
 
 namespace sfa {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
-constexpr double degrees = pi / 180;
 
 // Indexed by Param. The angles of §3.1 are given as f(chi) = 2 atan(sqrt(chi)). These are
 // the checks of sfa_set_param and the answers of sfa_get_param_bounds.
@@ -46,7 +44,7 @@ Parameters::Parameters()
 {
     for (int k = 0; k < static_cast<int>(Param::count); ++k)
         value_[k] = specs[k].default_value;
-    value_[static_cast<int>(Param::split_shortest_ratio)] = std::tan(4 * degrees) / std::tan(15 * degrees);
+    value_[static_cast<int>(Param::split_shortest_ratio)] = std::tan(4 * radians_per_degree) / std::tan(15 * radians_per_degree);
 }
 
 bool Parameters::is_key(int key) { return key >= 0 && key < static_cast<int>(Param::count); }
