@@ -52,7 +52,7 @@ extern "C" {
 /** Major version of the library (incompatible changes). */
 #define SFA_VERSION_MAJOR 1
 /** Minor version of the library (compatible additions). */
-#define SFA_VERSION_MINOR 0
+#define SFA_VERSION_MINOR 1
 /** Patch version of the library (fixes). */
 #define SFA_VERSION_PATCH 0
 /** Version of the binary interface this header describes; see sfa_get_api(). */

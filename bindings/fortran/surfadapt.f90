@@ -20,7 +20,7 @@ module surfadapt
 
   ! ------------------------------------------------------------------ versions
   integer(c_int), parameter, public :: SFA_VERSION_MAJOR = 1
-  integer(c_int), parameter, public :: SFA_VERSION_MINOR = 0
+  integer(c_int), parameter, public :: SFA_VERSION_MINOR = 1
   integer(c_int), parameter, public :: SFA_VERSION_PATCH = 0
   ! The header's SFA_ABI_VERSION, renamed: Fortran names are case-insensitive, so it
   ! would clash with the function sfa_abi_version.
