@@ -2,6 +2,7 @@
 
 #include "geometry/quadric.hpp"
 #include "geometry/self_intersection.hpp"
+#include "geometry/spatial_grid.hpp"
 #include "mesh/parallel.hpp"
 
 #include <algorithm>
@@ -19,81 +20,24 @@ uint64_t cell_key(int64_t i, int64_t j, int64_t k)
            (static_cast<uint64_t>(k) & mask);
 }
 
-// A uniform grid of points: cells of a given size over the points' box (larger if that
-// would make more than 8 cells per point), and the points listed cell by cell (a counting
-// sort, no hashing).
-class PointGrid {
-public:
-    PointGrid(const std::vector<Vec3> &points, double cell) : origin_(points[0])
-    {
-        Vec3 high = points[0];
-        for (const Vec3 &p : points) {
-            origin_ = origin_.cwiseMin(p);
-            high = high.cwiseMax(p);
-        }
-        const auto cells_for = [&](double size) -> Eigen::Array3d {
-            return ((high - origin_) / size).array().floor() + 1;
-        };
-        const double limit = 8.0 * static_cast<double>(points.size()) + 64;
-        if (cells_for(cell).prod() > limit) // a thin surface in a large box
-            cell *= std::cbrt(cells_for(cell).prod() / limit) * 1.01;
-        cell_ = cell;
-        const Eigen::Array3d count = cells_for(cell);
-        nx_ = static_cast<int64_t>(count[0]);
-        ny_ = static_cast<int64_t>(count[1]);
-        nz_ = static_cast<int64_t>(count[2]);
-        const int32_t n = static_cast<int32_t>(points.size());
-        std::vector<int64_t> cell_of_point(n);
-#pragma omp parallel for num_threads(loop_threads()) schedule(static)
-        for (int32_t v = 0; v < n; ++v) {
-            const Cell c = cell_of(points[v]);
-            cell_of_point[v] = (c[0] * ny_ + c[1]) * nz_ + c[2];
-        }
-        start_.assign(static_cast<size_t>(nx_ * ny_ * nz_) + 1, 0);
-        for (int64_t c : cell_of_point)
-            ++start_[c + 1];
-        for (size_t c = 1; c < start_.size(); ++c)
-            start_[c] += start_[c - 1];
-        point_.resize(n);
-        std::vector<int32_t> next(start_.begin(), start_.end() - 1);
-        for (int32_t v = 0; v < n; ++v)
-            point_[next[cell_of_point[v]]++] = v;
+// The cells for the search of near_facing_sheet: of size `cell` from the points' lowest
+// corner, larger if the box around the points would hold more than 8 cells per point (a
+// thin surface in a large box). The grid would not need the limit, its memory grows with
+// the points; but which partner a vertex records depends on the order in which it meets
+// the others, cell by cell, so the cells stay those the search has always had.
+CellFrame facing_search_cells(const std::vector<Vec3> &points, double cell)
+{
+    Vec3 origin = points[0], high = points[0];
+    for (const Vec3 &p : points) {
+        origin = origin.cwiseMin(p);
+        high = high.cwiseMax(p);
     }
-
-    // The points in cell order: those of one cell are next to each other.
-    const std::vector<int32_t> &points() const { return point_; }
-
-    // Calls fn(k) for the position k in points() of every point in a cell that the box
-    // [lo, hi] meets.
-    template <class Fn>
-    void for_each_near(const Vec3 &lo, const Vec3 &hi, Fn &&fn) const
-    {
-        const Cell a = cell_of(lo), b = cell_of(hi);
-        for (int64_t i = a[0]; i <= b[0]; ++i)
-            for (int64_t j = a[1]; j <= b[1]; ++j) {
-                const int64_t column = (i * ny_ + j) * nz_;
-                for (int32_t k = start_[column + a[2]]; k < start_[column + b[2] + 1]; ++k)
-                    fn(k);
-            }
-    }
-
-private:
-    using Cell = std::array<int64_t, 3>;
-    // Clamped to the grid: a box reaching outside meets the border cells.
-    Cell cell_of(const Vec3 &p) const
-    {
-        const Eigen::Array3d c = ((p - origin_) / cell_).array().floor();
-        return {std::clamp<int64_t>(static_cast<int64_t>(c[0]), 0, nx_ - 1),
-                std::clamp<int64_t>(static_cast<int64_t>(c[1]), 0, ny_ - 1),
-                std::clamp<int64_t>(static_cast<int64_t>(c[2]), 0, nz_ - 1)};
-    }
-
-    Vec3 origin_;
-    double cell_ = 1;
-    int64_t nx_ = 1, ny_ = 1, nz_ = 1;
-    std::vector<int32_t> start_; // cell c's points are point_[start_[c]] .. point_[start_[c + 1] - 1]
-    std::vector<int32_t> point_;
-};
+    const auto cells_for = [&](double size) -> Eigen::Array3d { return ((high - origin) / size).array().floor() + 1; };
+    const double limit = 8.0 * static_cast<double>(points.size()) + 64;
+    if (cells_for(cell).prod() > limit)
+        cell *= std::cbrt(cells_for(cell).prod() / limit) * 1.01;
+    return CellFrame{origin, cell};
+}
 
 } // namespace
 
@@ -115,24 +59,23 @@ std::vector<char> near_facing_sheet(const TriMesh &mesh)
     if (!(mean_reach > 0))
         return marked;
     // Cells of twice the mean reach, the distance most vertices search: a ball's box meets
-    // 4 to 9 columns of cells.
-    const PointGrid grid(mesh.pos, 2 * mean_reach);
-    // What the search reads of each vertex, in the grid's order: a cell's vertices are
-    // read one after another.
-    struct Entry {
+    // two or three cells on each axis. Each vertex is in the grid with what the search reads
+    // of it, so that the vertices of a cell are read one after another.
+    struct Point {
         Vec3 position, normal;
         double reach;
+        int32_t vertex;
     };
-    const std::vector<int32_t> &in_order = grid.points();
-    std::vector<Entry> entry(n);
-#pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t k = 0; k < n; ++k)
-        entry[k] = {mesh.pos[in_order[k]], normal[in_order[k]], reach[in_order[k]]};
+    SpatialGrid<Point> grid;
+    grid.build(
+        facing_search_cells(mesh.pos, 2 * mean_reach), n,
+        [&](int32_t v) { return std::array<Vec3, 2>{mesh.pos[v], mesh.pos[v]}; },
+        [&](int32_t v, const GridCell &) { return Point{mesh.pos[v], normal[v], reach[v], v}; });
 
     // Two fans can meet if their vertices are nearer than the sum of their reaches. Each
     // vertex looks within twice its own reach, so the one with the longer reach of such a
-    // pair finds it; it records its partner (in parallel, one write each), and both are
-    // marked after.
+    // pair finds it; it records the first partner it meets (in parallel, one write each),
+    // and both are marked after.
     std::vector<int32_t> partner(n, -1);
 #pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 256)
     for (int32_t v = 0; v < n; ++v) {
@@ -143,11 +86,13 @@ std::vector<char> near_facing_sheet(const TriMesh &mesh)
             return found;
         };
         const Vec3 r = Vec3::Constant(2 * reach[v]);
-        grid.for_each_near(p - r, p + r, [&](int32_t k) {
-            if (partner[v] < 0 && nv.dot(entry[k].normal) < 0 &&
-                (entry[k].position - p).norm() < reach[v] + entry[k].reach && in_order[k] != v &&
-                !is_neighbour(in_order[k]))
-                partner[v] = in_order[k];
+        const CellFrame &cells = grid.frame();
+        grid.any_built_in_cells(cells.cell_of(p - r), cells.cell_of(p + r), [&](const Point &w) {
+            if (!(nv.dot(w.normal) < 0) || !((w.position - p).norm() < reach[v] + w.reach) || w.vertex == v ||
+                is_neighbour(w.vertex))
+                return false;
+            partner[v] = w.vertex;
+            return true;
         });
     }
     for (int32_t v = 0; v < n; ++v)
