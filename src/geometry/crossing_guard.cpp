@@ -2,7 +2,6 @@
 
 #include "geometry/quadric.hpp"
 #include "geometry/self_intersection.hpp"
-#include "geometry/spatial_grid.hpp"
 #include "mesh/parallel.hpp"
 
 #include <algorithm>
@@ -10,15 +9,6 @@
 
 namespace sfa {
 namespace {
-
-// A cell (i, j, k) as one key, 21 bits per axis. Cells further apart than 2^21 share keys:
-// that only brings more candidates, each tested exactly.
-uint64_t cell_key(int64_t i, int64_t j, int64_t k)
-{
-    constexpr uint64_t mask = (uint64_t{1} << 21) - 1;
-    return (static_cast<uint64_t>(i) & mask) << 42 | (static_cast<uint64_t>(j) & mask) << 21 |
-           (static_cast<uint64_t>(k) & mask);
-}
 
 // The cells for the search of near_facing_sheet: of size `cell` from the points' lowest
 // corner, larger if the box around the points would hold more than 8 cells per point (a
@@ -114,27 +104,6 @@ void CrossingGuard::renumber(const std::vector<int32_t> &vertex_map)
     watched_.swap(watched);
 }
 
-CrossingGuard::Cell CrossingGuard::cell_of(const Vec3 &p) const
-{
-    const Vec3 c = ((p - origin_) * inverse_cell_size_).array().floor();
-    return {static_cast<int64_t>(c[0]), static_cast<int64_t>(c[1]), static_cast<int64_t>(c[2])};
-}
-
-template <class Fn>
-void CrossingGuard::for_each_cell(const Vec3 &lo, const Vec3 &hi, Fn &&fn) const
-{
-    const Cell a = cell_of(lo), b = cell_of(hi);
-    for (int64_t i = a[0]; i <= b[0]; ++i)
-        for (int64_t j = a[1]; j <= b[1]; ++j)
-            for (int64_t k = a[2]; k <= b[2]; ++k)
-                fn(i, j, k);
-}
-
-size_t CrossingGuard::bucket_of(int64_t i, int64_t j, int64_t k) const
-{
-    return (cell_key(i, j, k) * 0x9E3779B97F4A7C15u) >> bucket_shift_; // Fibonacci hashing
-}
-
 const std::vector<int32_t> &CrossingGuard::index_faces(const TriMesh &mesh, const std::vector<Vec3> &pos)
 {
     // Which faces are watched, and their boxes, in parallel: finding them means looking at
@@ -159,70 +128,44 @@ const std::vector<int32_t> &CrossingGuard::index_faces(const TriMesh &mesh, cons
         const Triangle &t = mesh.tri[faces_[m]];
         return (pos[t[1]] - pos[t[0]]).norm() + (pos[t[2]] - pos[t[1]]).norm() + (pos[t[0]] - pos[t[2]]).norm();
     });
-    origin_ = n > 0 ? boxes_[0][0] : Vec3::Zero();
+    Vec3 origin = n > 0 ? boxes_[0][0] : Vec3::Zero();
     for (const std::array<Vec3, 2> &box : boxes_)
-        origin_ = origin_.cwiseMin(box[0]);
+        origin = origin.cwiseMin(box[0]);
     // Cells of twice the mean edge: a face's box covers one to a few cells, a cell holds
-    // about ten faces. As many buckets as faces: most hold one cell or none.
-    cell_size_ = n > 0 ? 2 * edge_sum / (3.0 * n) : 1;
-    if (!(cell_size_ > 0))
-        cell_size_ = 1;
-    inverse_cell_size_ = 1 / cell_size_;
-    int bits = 4;
-    while ((size_t{1} << bits) < faces_.size())
-        ++bits;
-    bucket_shift_ = 64 - bits;
-    const size_t buckets = size_t{1} << bits;
-    bucket_start_.assign(buckets + 1, 0);
-    for (const std::array<Vec3, 2> &box : boxes_)
-        for_each_cell(box[0], box[1], [&](int64_t i, int64_t j, int64_t k) { ++bucket_start_[bucket_of(i, j, k) + 1]; });
-    for (size_t b = 1; b <= buckets; ++b)
-        bucket_start_[b] += bucket_start_[b - 1];
-    entries_.resize(bucket_start_[buckets]);
-    std::vector<int32_t> fill(bucket_start_.begin(), bucket_start_.end() - 1);
-    for (int32_t m = 0; m < n; ++m) {
-        const Vec3 &lo = boxes_[m][0], &hi = boxes_[m][1];
-        const Cell first = cell_of(lo);
-        for_each_cell(lo, hi, [&](int64_t i, int64_t j, int64_t k) {
-            entries_[fill[bucket_of(i, j, k)]++] = {lo, hi, first, faces_[m], -1};
-        });
-    }
-    refreshed_.clear();
-    refreshed_head_.assign(buckets, -1);
+    // about ten faces.
+    double cell_size = n > 0 ? 2 * edge_sum / (3.0 * n) : 1;
+    if (!(cell_size > 0))
+        cell_size = 1;
+    grid_.build(
+        CellFrame{origin, cell_size}, n, [&](int32_t m) { return boxes_[m]; },
+        [&](int32_t m, const GridCell &first) { return FaceEntry{boxes_[m][0], boxes_[m][1], first, faces_[m]}; });
     return faces_;
 }
 
 void CrossingGuard::refresh(const TriMesh &mesh, const std::vector<Vec3> &pos, int32_t f)
 {
     const Triangle &t = mesh.tri[f];
-    if (t[0] < 0 || !watches_any(t) || refreshed_head_.empty())
+    if (t[0] < 0 || !watches_any(t) || !grid_.built())
         return;
     const Vec3 lo = pos[t[0]].cwiseMin(pos[t[1]]).cwiseMin(pos[t[2]]);
     const Vec3 hi = pos[t[0]].cwiseMax(pos[t[1]]).cwiseMax(pos[t[2]]);
-    const Cell first = cell_of(lo);
     // A face entered before keeps its old entries too; they only bring it up again.
-    for_each_cell(lo, hi, [&](int64_t i, int64_t j, int64_t k) {
-        int32_t &head = refreshed_head_[bucket_of(i, j, k)];
-        refreshed_.push_back({lo, hi, first, f, head});
-        head = static_cast<int32_t>(refreshed_.size() - 1);
-    });
+    grid_.add(lo, hi, [&](const GridCell &first) { return FaceEntry{lo, hi, first, f}; });
 }
 
 bool CrossingGuard::crosses(const TriMesh &mesh, const std::vector<Vec3> &pos, const Triangle &corner,
                             const Vec3 (&at)[3], int32_t also) const
 {
-    if (entries_.empty() && refreshed_.empty())
+    if (grid_.empty())
         return false;
     const Vec3 lo = at[0].cwiseMin(at[1]).cwiseMin(at[2]), hi = at[0].cwiseMax(at[1]).cwiseMax(at[2]);
-    const Cell first = cell_of(lo), last = cell_of(hi);
-    // Entry e, met in cell (i, j, k): true if its face, as it is now, meets the new face.
-    const auto meets = [&](const Entry &e, int64_t i, int64_t j, int64_t k) {
+    const GridCell first = grid_.frame().cell_of(lo), last = grid_.frame().cell_of(hi);
+    // Entry e, met in cell `here`: true if its face, as it is now, meets the new face.
+    return grid_.any_in_cells(first, last, [&](const FaceEntry &e, const GridCell &here) {
         if ((e.lo - hi).maxCoeff() > 0 || (lo - e.hi).maxCoeff() > 0)
             return false; // boxes apart
-        // Each face once, without a list of those seen: in the first cell where both boxes
-        // are (an entry is in every cell its box covers).
-        if (std::max(first[0], e.first[0]) != i || std::max(first[1], e.first[1]) != j ||
-            std::max(first[2], e.first[2]) != k)
+        // Each face once, without a list of those seen.
+        if (!same_cell(first_shared_cell(first, e.first), here))
             return false;
         const Triangle &t = mesh.tri[e.face];
         if (t[0] < 0)
@@ -231,19 +174,7 @@ bool CrossingGuard::crosses(const TriMesh &mesh, const std::vector<Vec3> &pos, c
             if (v == corner[0] || v == corner[1] || v == corner[2] || v == also)
                 return false; // a neighbour
         return triangles_intersect(at[0], at[1], at[2], pos[t[0]], pos[t[1]], pos[t[2]]);
-    };
-    for (int64_t i = first[0]; i <= last[0]; ++i)
-        for (int64_t j = first[1]; j <= last[1]; ++j)
-            for (int64_t k = first[2]; k <= last[2]; ++k) {
-                const size_t b = bucket_of(i, j, k);
-                for (int32_t e = bucket_start_[b]; e < bucket_start_[b + 1]; ++e)
-                    if (meets(entries_[e], i, j, k))
-                        return true;
-                for (int32_t e = refreshed_head_[b]; e >= 0; e = refreshed_[e].next)
-                    if (meets(refreshed_[e], i, j, k))
-                        return true;
-            }
-    return false;
+    });
 }
 
 } // namespace sfa
