@@ -10,90 +10,24 @@
 namespace sfa {
 namespace {
 
-// A cell (i, j, k) as one key, 21 bits per axis. Cells further apart than 2^21 share keys:
-// that only brings more candidates, each tested exactly.
-uint64_t cell_key(int64_t i, int64_t j, int64_t k)
+// The cells for the search of near_facing_sheet: of size `cell` from the points' lowest
+// corner, larger if the box around the points would hold more than 8 cells per point (a
+// thin surface in a large box). The grid would not need the limit, its memory grows with
+// the points; but which partner a vertex records depends on the order in which it meets
+// the others, cell by cell, so the cells stay those the search has always had.
+CellFrame facing_search_cells(const std::vector<Vec3> &points, double cell)
 {
-    constexpr uint64_t mask = (uint64_t{1} << 21) - 1;
-    return (static_cast<uint64_t>(i) & mask) << 42 | (static_cast<uint64_t>(j) & mask) << 21 |
-           (static_cast<uint64_t>(k) & mask);
+    Vec3 origin = points[0], high = points[0];
+    for (const Vec3 &p : points) {
+        origin = origin.cwiseMin(p);
+        high = high.cwiseMax(p);
+    }
+    const auto cells_for = [&](double size) -> Eigen::Array3d { return ((high - origin) / size).array().floor() + 1; };
+    const double limit = 8.0 * static_cast<double>(points.size()) + 64;
+    if (cells_for(cell).prod() > limit)
+        cell *= std::cbrt(cells_for(cell).prod() / limit) * 1.01;
+    return CellFrame{origin, cell};
 }
-
-// A uniform grid of points: cells of a given size over the points' box (larger if that
-// would make more than 8 cells per point), and the points listed cell by cell (a counting
-// sort, no hashing).
-class PointGrid {
-public:
-    PointGrid(const std::vector<Vec3> &points, double cell) : origin_(points[0])
-    {
-        Vec3 high = points[0];
-        for (const Vec3 &p : points) {
-            origin_ = origin_.cwiseMin(p);
-            high = high.cwiseMax(p);
-        }
-        const auto cells_for = [&](double size) -> Eigen::Array3d {
-            return ((high - origin_) / size).array().floor() + 1;
-        };
-        const double limit = 8.0 * static_cast<double>(points.size()) + 64;
-        if (cells_for(cell).prod() > limit) // a thin surface in a large box
-            cell *= std::cbrt(cells_for(cell).prod() / limit) * 1.01;
-        cell_ = cell;
-        const Eigen::Array3d count = cells_for(cell);
-        nx_ = static_cast<int64_t>(count[0]);
-        ny_ = static_cast<int64_t>(count[1]);
-        nz_ = static_cast<int64_t>(count[2]);
-        const int32_t n = static_cast<int32_t>(points.size());
-        std::vector<int64_t> cell_of_point(n);
-#pragma omp parallel for num_threads(loop_threads()) schedule(static)
-        for (int32_t v = 0; v < n; ++v) {
-            const Cell c = cell_of(points[v]);
-            cell_of_point[v] = (c[0] * ny_ + c[1]) * nz_ + c[2];
-        }
-        start_.assign(static_cast<size_t>(nx_ * ny_ * nz_) + 1, 0);
-        for (int64_t c : cell_of_point)
-            ++start_[c + 1];
-        for (size_t c = 1; c < start_.size(); ++c)
-            start_[c] += start_[c - 1];
-        point_.resize(n);
-        std::vector<int32_t> next(start_.begin(), start_.end() - 1);
-        for (int32_t v = 0; v < n; ++v)
-            point_[next[cell_of_point[v]]++] = v;
-    }
-
-    // The points in cell order: those of one cell are next to each other.
-    const std::vector<int32_t> &points() const { return point_; }
-
-    // Calls fn(k) for the position k in points() of every point in a cell that the box
-    // [lo, hi] meets.
-    template <class Fn>
-    void for_each_near(const Vec3 &lo, const Vec3 &hi, Fn &&fn) const
-    {
-        const Cell a = cell_of(lo), b = cell_of(hi);
-        for (int64_t i = a[0]; i <= b[0]; ++i)
-            for (int64_t j = a[1]; j <= b[1]; ++j) {
-                const int64_t column = (i * ny_ + j) * nz_;
-                for (int32_t k = start_[column + a[2]]; k < start_[column + b[2] + 1]; ++k)
-                    fn(k);
-            }
-    }
-
-private:
-    using Cell = std::array<int64_t, 3>;
-    // Clamped to the grid: a box reaching outside meets the border cells.
-    Cell cell_of(const Vec3 &p) const
-    {
-        const Eigen::Array3d c = ((p - origin_) / cell_).array().floor();
-        return {std::clamp<int64_t>(static_cast<int64_t>(c[0]), 0, nx_ - 1),
-                std::clamp<int64_t>(static_cast<int64_t>(c[1]), 0, ny_ - 1),
-                std::clamp<int64_t>(static_cast<int64_t>(c[2]), 0, nz_ - 1)};
-    }
-
-    Vec3 origin_;
-    double cell_ = 1;
-    int64_t nx_ = 1, ny_ = 1, nz_ = 1;
-    std::vector<int32_t> start_; // cell c's points are point_[start_[c]] .. point_[start_[c + 1] - 1]
-    std::vector<int32_t> point_;
-};
 
 } // namespace
 
@@ -115,24 +49,23 @@ std::vector<char> near_facing_sheet(const TriMesh &mesh)
     if (!(mean_reach > 0))
         return marked;
     // Cells of twice the mean reach, the distance most vertices search: a ball's box meets
-    // 4 to 9 columns of cells.
-    const PointGrid grid(mesh.pos, 2 * mean_reach);
-    // What the search reads of each vertex, in the grid's order: a cell's vertices are
-    // read one after another.
-    struct Entry {
+    // two or three cells on each axis. Each vertex is in the grid with what the search reads
+    // of it, so that the vertices of a cell are read one after another.
+    struct Point {
         Vec3 position, normal;
         double reach;
+        int32_t vertex;
     };
-    const std::vector<int32_t> &in_order = grid.points();
-    std::vector<Entry> entry(n);
-#pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t k = 0; k < n; ++k)
-        entry[k] = {mesh.pos[in_order[k]], normal[in_order[k]], reach[in_order[k]]};
+    SpatialGrid<Point> grid;
+    grid.build(
+        facing_search_cells(mesh.pos, 2 * mean_reach), n,
+        [&](int32_t v) { return std::array<Vec3, 2>{mesh.pos[v], mesh.pos[v]}; },
+        [&](int32_t v, const GridCell &) { return Point{mesh.pos[v], normal[v], reach[v], v}; });
 
     // Two fans can meet if their vertices are nearer than the sum of their reaches. Each
     // vertex looks within twice its own reach, so the one with the longer reach of such a
-    // pair finds it; it records its partner (in parallel, one write each), and both are
-    // marked after.
+    // pair finds it; it records the first partner it meets (in parallel, one write each),
+    // and both are marked after.
     std::vector<int32_t> partner(n, -1);
 #pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 256)
     for (int32_t v = 0; v < n; ++v) {
@@ -143,11 +76,13 @@ std::vector<char> near_facing_sheet(const TriMesh &mesh)
             return found;
         };
         const Vec3 r = Vec3::Constant(2 * reach[v]);
-        grid.for_each_near(p - r, p + r, [&](int32_t k) {
-            if (partner[v] < 0 && nv.dot(entry[k].normal) < 0 &&
-                (entry[k].position - p).norm() < reach[v] + entry[k].reach && in_order[k] != v &&
-                !is_neighbour(in_order[k]))
-                partner[v] = in_order[k];
+        const CellFrame &cells = grid.frame();
+        grid.any_built_in_cells(cells.cell_of(p - r), cells.cell_of(p + r), [&](const Point &w) {
+            if (!(nv.dot(w.normal) < 0) || !((w.position - p).norm() < reach[v] + w.reach) || w.vertex == v ||
+                is_neighbour(w.vertex))
+                return false;
+            partner[v] = w.vertex;
+            return true;
         });
     }
     for (int32_t v = 0; v < n; ++v)
@@ -167,27 +102,6 @@ void CrossingGuard::renumber(const std::vector<int32_t> &vertex_map)
         if (vertex_map[v] >= 0)
             watched[vertex_map[v]] = watched_[v];
     watched_.swap(watched);
-}
-
-CrossingGuard::Cell CrossingGuard::cell_of(const Vec3 &p) const
-{
-    const Vec3 c = ((p - origin_) * inverse_cell_size_).array().floor();
-    return {static_cast<int64_t>(c[0]), static_cast<int64_t>(c[1]), static_cast<int64_t>(c[2])};
-}
-
-template <class Fn>
-void CrossingGuard::for_each_cell(const Vec3 &lo, const Vec3 &hi, Fn &&fn) const
-{
-    const Cell a = cell_of(lo), b = cell_of(hi);
-    for (int64_t i = a[0]; i <= b[0]; ++i)
-        for (int64_t j = a[1]; j <= b[1]; ++j)
-            for (int64_t k = a[2]; k <= b[2]; ++k)
-                fn(i, j, k);
-}
-
-size_t CrossingGuard::bucket_of(int64_t i, int64_t j, int64_t k) const
-{
-    return (cell_key(i, j, k) * 0x9E3779B97F4A7C15u) >> bucket_shift_; // Fibonacci hashing
 }
 
 const std::vector<int32_t> &CrossingGuard::index_faces(const TriMesh &mesh, const std::vector<Vec3> &pos)
@@ -214,70 +128,44 @@ const std::vector<int32_t> &CrossingGuard::index_faces(const TriMesh &mesh, cons
         const Triangle &t = mesh.tri[faces_[m]];
         return (pos[t[1]] - pos[t[0]]).norm() + (pos[t[2]] - pos[t[1]]).norm() + (pos[t[0]] - pos[t[2]]).norm();
     });
-    origin_ = n > 0 ? boxes_[0][0] : Vec3::Zero();
+    Vec3 origin = n > 0 ? boxes_[0][0] : Vec3::Zero();
     for (const std::array<Vec3, 2> &box : boxes_)
-        origin_ = origin_.cwiseMin(box[0]);
+        origin = origin.cwiseMin(box[0]);
     // Cells of twice the mean edge: a face's box covers one to a few cells, a cell holds
-    // about ten faces. As many buckets as faces: most hold one cell or none.
-    cell_size_ = n > 0 ? 2 * edge_sum / (3.0 * n) : 1;
-    if (!(cell_size_ > 0))
-        cell_size_ = 1;
-    inverse_cell_size_ = 1 / cell_size_;
-    int bits = 4;
-    while ((size_t{1} << bits) < faces_.size())
-        ++bits;
-    bucket_shift_ = 64 - bits;
-    const size_t buckets = size_t{1} << bits;
-    bucket_start_.assign(buckets + 1, 0);
-    for (const std::array<Vec3, 2> &box : boxes_)
-        for_each_cell(box[0], box[1], [&](int64_t i, int64_t j, int64_t k) { ++bucket_start_[bucket_of(i, j, k) + 1]; });
-    for (size_t b = 1; b <= buckets; ++b)
-        bucket_start_[b] += bucket_start_[b - 1];
-    entries_.resize(bucket_start_[buckets]);
-    std::vector<int32_t> fill(bucket_start_.begin(), bucket_start_.end() - 1);
-    for (int32_t m = 0; m < n; ++m) {
-        const Vec3 &lo = boxes_[m][0], &hi = boxes_[m][1];
-        const Cell first = cell_of(lo);
-        for_each_cell(lo, hi, [&](int64_t i, int64_t j, int64_t k) {
-            entries_[fill[bucket_of(i, j, k)]++] = {lo, hi, first, faces_[m], -1};
-        });
-    }
-    refreshed_.clear();
-    refreshed_head_.assign(buckets, -1);
+    // about ten faces.
+    double cell_size = n > 0 ? 2 * edge_sum / (3.0 * n) : 1;
+    if (!(cell_size > 0))
+        cell_size = 1;
+    grid_.build(
+        CellFrame{origin, cell_size}, n, [&](int32_t m) { return boxes_[m]; },
+        [&](int32_t m, const GridCell &first) { return FaceEntry{boxes_[m][0], boxes_[m][1], first, faces_[m]}; });
     return faces_;
 }
 
 void CrossingGuard::refresh(const TriMesh &mesh, const std::vector<Vec3> &pos, int32_t f)
 {
     const Triangle &t = mesh.tri[f];
-    if (t[0] < 0 || !watches_any(t) || refreshed_head_.empty())
+    if (t[0] < 0 || !watches_any(t) || !grid_.built())
         return;
     const Vec3 lo = pos[t[0]].cwiseMin(pos[t[1]]).cwiseMin(pos[t[2]]);
     const Vec3 hi = pos[t[0]].cwiseMax(pos[t[1]]).cwiseMax(pos[t[2]]);
-    const Cell first = cell_of(lo);
     // A face entered before keeps its old entries too; they only bring it up again.
-    for_each_cell(lo, hi, [&](int64_t i, int64_t j, int64_t k) {
-        int32_t &head = refreshed_head_[bucket_of(i, j, k)];
-        refreshed_.push_back({lo, hi, first, f, head});
-        head = static_cast<int32_t>(refreshed_.size() - 1);
-    });
+    grid_.add(lo, hi, [&](const GridCell &first) { return FaceEntry{lo, hi, first, f}; });
 }
 
 bool CrossingGuard::crosses(const TriMesh &mesh, const std::vector<Vec3> &pos, const Triangle &corner,
                             const Vec3 (&at)[3], int32_t also) const
 {
-    if (entries_.empty() && refreshed_.empty())
+    if (grid_.empty())
         return false;
     const Vec3 lo = at[0].cwiseMin(at[1]).cwiseMin(at[2]), hi = at[0].cwiseMax(at[1]).cwiseMax(at[2]);
-    const Cell first = cell_of(lo), last = cell_of(hi);
-    // Entry e, met in cell (i, j, k): true if its face, as it is now, meets the new face.
-    const auto meets = [&](const Entry &e, int64_t i, int64_t j, int64_t k) {
+    const GridCell first = grid_.frame().cell_of(lo), last = grid_.frame().cell_of(hi);
+    // Entry e, met in cell `here`: true if its face, as it is now, meets the new face.
+    return grid_.any_in_cells(first, last, [&](const FaceEntry &e, const GridCell &here) {
         if ((e.lo - hi).maxCoeff() > 0 || (lo - e.hi).maxCoeff() > 0)
             return false; // boxes apart
-        // Each face once, without a list of those seen: in the first cell where both boxes
-        // are (an entry is in every cell its box covers).
-        if (std::max(first[0], e.first[0]) != i || std::max(first[1], e.first[1]) != j ||
-            std::max(first[2], e.first[2]) != k)
+        // Each face once, without a list of those seen.
+        if (!same_cell(first_shared_cell(first, e.first), here))
             return false;
         const Triangle &t = mesh.tri[e.face];
         if (t[0] < 0)
@@ -286,19 +174,7 @@ bool CrossingGuard::crosses(const TriMesh &mesh, const std::vector<Vec3> &pos, c
             if (v == corner[0] || v == corner[1] || v == corner[2] || v == also)
                 return false; // a neighbour
         return triangles_intersect(at[0], at[1], at[2], pos[t[0]], pos[t[1]], pos[t[2]]);
-    };
-    for (int64_t i = first[0]; i <= last[0]; ++i)
-        for (int64_t j = first[1]; j <= last[1]; ++j)
-            for (int64_t k = first[2]; k <= last[2]; ++k) {
-                const size_t b = bucket_of(i, j, k);
-                for (int32_t e = bucket_start_[b]; e < bucket_start_[b + 1]; ++e)
-                    if (meets(entries_[e], i, j, k))
-                        return true;
-                for (int32_t e = refreshed_head_[b]; e >= 0; e = refreshed_[e].next)
-                    if (meets(refreshed_[e], i, j, k))
-                        return true;
-            }
-    return false;
+    });
 }
 
 } // namespace sfa

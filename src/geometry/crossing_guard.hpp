@@ -6,6 +6,7 @@
 // surface, so only the faces near such a place are watched, and the check costs little.
 #pragma once
 
+#include "geometry/spatial_grid.hpp"
 #include "mesh/tri_mesh.hpp"
 
 #include <array>
@@ -20,7 +21,7 @@ namespace sfa {
 // longest edges (their fans can meet); then so is every neighbour of a marked vertex.
 std::vector<char> near_facing_sheet(const TriMesh &mesh);
 
-// The faces with a watched corner, in a uniform grid, to ask whether a face would meet
+// The faces with a watched corner, in a spatial grid, to ask whether a face would meet
 // one of them. The watched vertices are carried through the changes of an adaptation
 // (add_vertex, renumber); the grid is built anew (index_faces) after vertices moved or
 // faces were renumbered, and a face an operation changed is entered again (refresh).
@@ -50,37 +51,20 @@ public:
                  int32_t also = -1) const;
 
 private:
-    using Cell = std::array<int64_t, 3>;
-    Cell cell_of(const Vec3 &p) const;
-    template <class Fn>
-    void for_each_cell(const Vec3 &lo, const Vec3 &hi, Fn &&fn) const;
-    size_t bucket_of(int64_t i, int64_t j, int64_t k) const;
-
     // A face in a cell, with its box and first cell as they were when it was entered: most
-    // candidates of a query are settled without reading the mesh. A bucket holds the cells
-    // whose keys hash to it; an entry of another cell in it only brings a candidate up
-    // again.
-    struct Entry {
+    // candidates of a query are settled without reading the mesh.
+    struct FaceEntry {
         Vec3 lo, hi;
-        Cell first; // the cell of lo
+        GridCell first; // the cell of lo
         int32_t face;
-        int32_t next; // for refreshed entries: the bucket's next one, or -1
     };
 
     std::vector<char> watched_;
     std::vector<int32_t> faces_;
     std::vector<std::array<Vec3, 2>> boxes_; // of faces_, while they are indexed
-    double cell_size_ = 0, inverse_cell_size_ = 0;
-    Vec3 origin_ = Vec3::Zero();
-    int bucket_shift_ = 63;
-    // The faces indexed together, bucket by bucket (a counting sort): a query reads one
-    // contiguous run per cell. Bucket b's entries are entries_[bucket_start_[b]] up to
-    // entries_[bucket_start_[b + 1] - 1].
-    std::vector<int32_t> bucket_start_;
-    std::vector<Entry> entries_;
-    // The faces refreshed since, chained per bucket from refreshed_head_.
-    std::vector<int32_t> refreshed_head_;
-    std::vector<Entry> refreshed_;
+    // The faces indexed together, sorted bucket by bucket: a query reads one contiguous run
+    // per cell; the faces refreshed since, chained per bucket.
+    SpatialGrid<FaceEntry> grid_;
 };
 
 } // namespace sfa

@@ -1,12 +1,12 @@
 #include "geometry/self_intersection.hpp"
 
+#include "geometry/spatial_grid.hpp"
 #include "mesh/parallel.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <utility>
 
 namespace sfa {
 namespace {
@@ -140,35 +140,15 @@ int32_t self_intersection_count(const TriMesh &mesh)
     cell = 2 * cell / n;
     if (!(cell > 0))
         return 0;
-    using Cell = std::array<int64_t, 3>;
-    std::vector<Cell> box_lo(n), box_hi(n);
-    for (int32_t t = 0; t < n; ++t) {
-        const Triangle &c = mesh.tri[t];
-        const Vec3 lo = mesh.pos[c[0]].cwiseMin(mesh.pos[c[1]]).cwiseMin(mesh.pos[c[2]]);
-        const Vec3 hi = mesh.pos[c[0]].cwiseMax(mesh.pos[c[1]]).cwiseMax(mesh.pos[c[2]]);
-        for (int k = 0; k < 3; ++k) {
-            box_lo[t][k] = static_cast<int64_t>(std::floor((lo[k] - lowest[k]) / cell));
-            box_hi[t][k] = static_cast<int64_t>(std::floor((hi[k] - lowest[k]) / cell));
-        }
-    }
-    // (cell, triangle) for every cell a triangle's box covers, sorted by cell; a cell is
-    // packed into 21 bits per axis (a surface spans far fewer than 2^21 cells).
-    const auto key = [](int64_t i, int64_t j, int64_t k) {
-        return static_cast<uint64_t>(i) << 42 | static_cast<uint64_t>(j) << 21 | static_cast<uint64_t>(k);
-    };
-    std::vector<std::pair<uint64_t, int32_t>> entries;
-    entries.reserve(2 * static_cast<size_t>(n));
-    for (int32_t t = 0; t < n; ++t)
-        for (int64_t i = box_lo[t][0]; i <= box_hi[t][0]; ++i)
-            for (int64_t j = box_lo[t][1]; j <= box_hi[t][1]; ++j)
-                for (int64_t k = box_lo[t][2]; k <= box_hi[t][2]; ++k)
-                    entries.push_back({key(i, j, k), t});
-    std::sort(entries.begin(), entries.end());
-    std::vector<size_t> group_start;
-    for (size_t e = 0; e < entries.size(); ++e)
-        if (e == 0 || entries[e].first != entries[e - 1].first)
-            group_start.push_back(e);
-    group_start.push_back(entries.size());
+    SpatialGrid<int32_t> grid; // the triangles in the cells their boxes cover
+    grid.build(
+        CellFrame{lowest, cell}, n,
+        [&](int32_t t) {
+            const Triangle &c = mesh.tri[t];
+            return std::array<Vec3, 2>{mesh.pos[c[0]].cwiseMin(mesh.pos[c[1]]).cwiseMin(mesh.pos[c[2]]),
+                                       mesh.pos[c[0]].cwiseMax(mesh.pos[c[1]]).cwiseMax(mesh.pos[c[2]])};
+        },
+        [](int32_t t, const GridCell &) { return t; });
 
     const auto share_a_vertex = [&](int32_t s, int32_t t) {
         for (int32_t v : mesh.tri[s])
@@ -176,25 +156,20 @@ int32_t self_intersection_count(const TriMesh &mesh)
                 return true;
         return false;
     };
-    const int64_t groups = static_cast<int64_t>(group_start.size()) - 1;
+    const int64_t buckets = static_cast<int64_t>(grid.bucket_count());
     int32_t count = 0;
 #pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 64) reduction(+ : count)
-    for (int64_t g = 0; g < groups; ++g) {
-        const uint64_t here = entries[group_start[g]].first;
-        for (size_t x = group_start[g]; x < group_start[g + 1]; ++x)
-            for (size_t y = x + 1; y < group_start[g + 1]; ++y) {
-                const int32_t s = entries[x].second, t = entries[y].second;
-                // Each pair once: in the cell of the lowest corner of where their boxes overlap.
-                const bool first_cell = key(std::max(box_lo[s][0], box_lo[t][0]), std::max(box_lo[s][1], box_lo[t][1]),
-                                            std::max(box_lo[s][2], box_lo[t][2])) == here;
-                if (!first_cell || share_a_vertex(s, t))
-                    continue;
-                const Triangle &a = mesh.tri[s], &b = mesh.tri[t];
-                if (triangles_intersect(mesh.pos[a[0]], mesh.pos[a[1]], mesh.pos[a[2]], mesh.pos[b[0]], mesh.pos[b[1]],
-                                        mesh.pos[b[2]]))
-                    ++count;
-            }
-    }
+    for (int64_t b = 0; b < buckets; ++b)
+        // A bucket's entries come in the order of their triangles: s < t.
+        grid.for_each_pair_in_bucket(static_cast<size_t>(b), [&](int32_t s, int32_t t, uint64_t here) {
+            // Each pair once: in the first cell both boxes cover.
+            if (cell_key(first_shared_cell(grid.cells_of(s)[0], grid.cells_of(t)[0])) != here || share_a_vertex(s, t))
+                return;
+            const Triangle &p = mesh.tri[s], &q = mesh.tri[t];
+            if (triangles_intersect(mesh.pos[p[0]], mesh.pos[p[1]], mesh.pos[p[2]], mesh.pos[q[0]], mesh.pos[q[1]],
+                                    mesh.pos[q[2]]))
+                ++count;
+        });
     return count;
 }
 

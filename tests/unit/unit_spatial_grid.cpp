@@ -1,0 +1,239 @@
+// Unit tests of the spatial grid: it finds each pair of overlapping boxes exactly once, the
+// pairs an all-pairs test finds, through its pair sweep and through its queries, built and
+// added alike; and a query meets the points of its cells in the order of the cells and of
+// the points. On random boxes in a compact box (the cells numbered densely), on boxes far
+// apart (the cells hashed, some 2^21 cells apart, so that their keys coincide), on large
+// boxes crowding few buckets, and on boxes that all lie in one cell.
+#include "geometry/spatial_grid.hpp"
+
+#include <algorithm>
+#include <cstdarg>
+#include <cstddef>
+#include <cstdint>
+#include <setjmp.h>
+#include <utility>
+#include <vector>
+
+extern "C" {
+#include <cmocka.h>
+}
+
+using namespace sfa;
+
+namespace {
+
+using Box = std::array<Vec3, 2>;
+using Pairs = std::vector<std::pair<int32_t, int32_t>>;
+
+// A fixed sequence of numbers in [0, 1), the same on every machine.
+struct Numbers {
+    uint64_t state;
+    double next()
+    {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<double>(state >> 11) / static_cast<double>(uint64_t{1} << 53);
+    }
+    Vec3 point() { return Vec3(next(), next(), next()); }
+};
+
+bool overlap(const Box &a, const Box &b)
+{
+    return (a[0] - b[1]).maxCoeff() <= 0 && (b[0] - a[1]).maxCoeff() <= 0;
+}
+
+Pairs all_pairs(const std::vector<Box> &boxes)
+{
+    Pairs pairs;
+    for (int32_t s = 0; s < static_cast<int32_t>(boxes.size()); ++s)
+        for (int32_t t = s + 1; t < static_cast<int32_t>(boxes.size()); ++t)
+            if (overlap(boxes[s], boxes[t]))
+                pairs.push_back({s, t});
+    return pairs;
+}
+
+// Boxes of up to `largest` on a side, with their low corners in the box [0, 1] * spread.
+std::vector<Box> random_boxes(int32_t count, double spread, double largest, uint64_t seed)
+{
+    Numbers numbers{seed};
+    std::vector<Box> boxes(count);
+    for (Box &box : boxes) {
+        box[0] = numbers.point() * spread;
+        box[1] = box[0] + numbers.point() * largest;
+    }
+    return boxes;
+}
+
+// Each pair of the pair sweep, where it counts: in the first cell both boxes cover.
+Pairs pairs_by_sweep(const std::vector<Box> &boxes, const CellFrame &cells)
+{
+    SpatialGrid<int32_t> grid;
+    grid.build(
+        cells, static_cast<int32_t>(boxes.size()), [&](int32_t m) { return boxes[m]; },
+        [](int32_t m, const GridCell &) { return m; });
+    Pairs pairs;
+    for (size_t b = 0; b < grid.bucket_count(); ++b)
+        grid.for_each_pair_in_bucket(b, [&](int32_t s, int32_t t, uint64_t key) {
+            assert_true(s < t);
+            if (cell_key(first_shared_cell(grid.cells_of(s)[0], grid.cells_of(t)[0])) == key &&
+                overlap(boxes[s], boxes[t]))
+                pairs.push_back({s, t});
+        });
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+// Each pair met by the query of its first box, where it counts; the boxes from `built` on
+// are added after the grid is built.
+Pairs pairs_by_query(const std::vector<Box> &boxes, const CellFrame &cells, int32_t built)
+{
+    struct Entry {
+        GridCell first;
+        int32_t box;
+    };
+    SpatialGrid<Entry> grid;
+    grid.build(
+        cells, built, [&](int32_t m) { return boxes[m]; },
+        [](int32_t m, const GridCell &first) { return Entry{first, m}; });
+    for (int32_t m = built; m < static_cast<int32_t>(boxes.size()); ++m)
+        grid.add(boxes[m][0], boxes[m][1], [&](const GridCell &first) { return Entry{first, m}; });
+    Pairs pairs;
+    for (int32_t s = 0; s < static_cast<int32_t>(boxes.size()); ++s) {
+        const GridCell first = cells.cell_of(boxes[s][0]);
+        grid.any_in_cells(first, cells.cell_of(boxes[s][1]), [&](const Entry &e, const GridCell &here) {
+            if (e.box > s && same_cell(first_shared_cell(first, e.first), here) && overlap(boxes[s], boxes[e.box]))
+                pairs.push_back({s, e.box});
+            return false;
+        });
+    }
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+void assert_same_pairs(const Pairs &found, const Pairs &expected)
+{
+    assert_int_equal(found.size(), expected.size()); // a pair found twice would show here
+    assert_true(found == expected);
+}
+
+void check_pairs(const std::vector<Box> &boxes, const CellFrame &cells)
+{
+    const Pairs expected = all_pairs(boxes);
+    assert_true(!expected.empty());
+    assert_same_pairs(pairs_by_sweep(boxes, cells), expected);
+    const int32_t count = static_cast<int32_t>(boxes.size());
+    for (const int32_t built : {count, count / 2, 0})
+        assert_same_pairs(pairs_by_query(boxes, cells, built), expected);
+}
+
+void random_boxes_pair_up_as_all_pairs_find(void **)
+{
+    // Cells of 0.1 over a box of 1: densely numbered. Boxes up to three cells wide.
+    check_pairs(random_boxes(600, 1.0, 0.3, 1), CellFrame{Vec3::Zero(), 0.1});
+}
+
+void boxes_far_apart_pair_up_as_all_pairs_find(void **)
+{
+    // Clusters 2^21 and 2^22 cells apart along each axis (their cells share keys), and a
+    // few boxes scattered in between: the cells are hashed.
+    std::vector<Box> boxes;
+    const double cell = 0.1, apart = cell * static_cast<double>(uint64_t{1} << 21);
+    for (const Vec3 &offset : {Vec3(0, 0, 0), Vec3(apart, 0, 0), Vec3(0, apart, 2 * apart), Vec3(apart, apart, apart)})
+        for (Box box : random_boxes(150, 1.0, 0.3, 2)) {
+            box[0] += offset;
+            box[1] += offset;
+            boxes.push_back(box);
+        }
+    for (const Box &box : random_boxes(40, 3 * apart, 0.3, 3))
+        boxes.push_back(box);
+    check_pairs(boxes, CellFrame{Vec3::Zero(), cell});
+}
+
+void large_boxes_in_few_buckets_pair_up_as_all_pairs_find(void **)
+{
+    // 30 boxes of up to six cells on a side in a box too large to number densely: a few
+    // thousand entries in 32 buckets, each bucket shared by many cells.
+    check_pairs(random_boxes(30, 1.0, 0.6, 6), CellFrame{Vec3::Zero(), 0.1});
+}
+
+void boxes_in_one_cell_pair_up_as_all_pairs_find(void **)
+{
+    check_pairs(random_boxes(80, 0.4, 0.5, 4), CellFrame{Vec3::Zero(), 1.0});
+}
+
+// The points a query meets, in order, against those in its cells sorted by cell (i, then
+// j, then k) and by number: the order the search for facing sheets depends on.
+void check_point_order(const std::vector<Vec3> &points, const CellFrame &cells, const std::vector<Box> &queries)
+{
+    SpatialGrid<int32_t> grid;
+    grid.build(
+        cells, static_cast<int32_t>(points.size()), [&](int32_t v) { return Box{points[v], points[v]}; },
+        [](int32_t v, const GridCell &) { return v; });
+    for (const Box &query : queries) {
+        const GridCell first = cells.cell_of(query[0]), last = cells.cell_of(query[1]);
+        std::vector<std::pair<GridCell, int32_t>> expected;
+        for (int32_t v = 0; v < static_cast<int32_t>(points.size()); ++v) {
+            const GridCell c = cells.cell_of(points[v]);
+            bool inside = true;
+            for (int a = 0; a < 3; ++a)
+                inside = inside && first[a] <= c[a] && c[a] <= last[a];
+            if (inside)
+                expected.push_back({c, v});
+        }
+        std::sort(expected.begin(), expected.end());
+        std::vector<int32_t> met, met_by_cell;
+        grid.any_built_in_cells(first, last, [&](int32_t v) {
+            met.push_back(v);
+            return false;
+        });
+        grid.any_in_cells(first, last, [&](int32_t v, const GridCell &here) {
+            assert_true(same_cell(cells.cell_of(points[v]), here));
+            met_by_cell.push_back(v);
+            return false;
+        });
+        assert_int_equal(met.size(), expected.size());
+        for (size_t k = 0; k < met.size(); ++k)
+            assert_int_equal(met[k], expected[k].second);
+        assert_true(met_by_cell == met);
+        // A query stops where its visit says so.
+        if (!met.empty()) {
+            int32_t last_met = -1;
+            assert_true(grid.any_built_in_cells(first, last, [&](int32_t v) {
+                last_met = v;
+                return v == met[met.size() / 2];
+            }));
+            assert_int_equal(last_met, met[met.size() / 2]);
+        }
+    }
+}
+
+void a_query_meets_points_cell_by_cell_in_their_order(void **)
+{
+    Numbers numbers{5};
+    std::vector<Vec3> points(2000);
+    for (Vec3 &p : points)
+        p = numbers.point();
+    std::vector<Box> queries;
+    for (int q = 0; q < 60; ++q) {
+        const Vec3 centre = numbers.point() * 1.2 - Vec3::Constant(0.1), half = numbers.point() * 0.15;
+        queries.push_back({centre - half, centre + half});
+    }
+    check_point_order(points, CellFrame{Vec3::Zero(), 0.05}, queries); // densely numbered
+    // One point far out: the box of the points is then hashed.
+    points.push_back(Vec3(1e6, -3e5, 2e6));
+    queries.push_back({points.back() - Vec3::Constant(0.1), points.back() + Vec3::Constant(0.1)});
+    check_point_order(points, CellFrame{Vec3(-1, -3e5, -1), 0.05}, queries);
+}
+
+} // namespace
+
+int main()
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(random_boxes_pair_up_as_all_pairs_find),
+        cmocka_unit_test(boxes_far_apart_pair_up_as_all_pairs_find),
+        cmocka_unit_test(large_boxes_in_few_buckets_pair_up_as_all_pairs_find),
+        cmocka_unit_test(boxes_in_one_cell_pair_up_as_all_pairs_find),
+        cmocka_unit_test(a_query_meets_points_cell_by_cell_in_their_order),
+    };
+    return cmocka_run_group_tests_name("unit_spatial_grid", tests, nullptr, nullptr);
+}
