@@ -15,7 +15,7 @@ bool triangles_intersect(const Vec3 &a0, const Vec3 &a1, const Vec3 &a2, const V
                          const Vec3 &b2);
 
 // The number of pairs of triangles that share no vertex yet intersect (touching counts).
-// Pairs are found through a uniform grid of cells of the mean edge length; the count is
+// Pairs are found through the spatial grid, cells of twice the mean edge length; the count is
 // the same for any number of threads.
 int32_t self_intersection_count(const TriMesh &mesh);
 
