@@ -6,6 +6,7 @@
 
 #include "mesh/mesh_edit.hpp"
 
+#include <utility>
 #include <vector>
 
 namespace sfa {
