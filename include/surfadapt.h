@@ -16,7 +16,8 @@
  * less than what is left of the step; (2) sfa_smooth(s, 1); (3) every few steps (the
  * paper: 4), or at once after a step the fold control had to cut to less than half,
  * sfa_adapt(), then read the new mesh (sfa_get_counts(), sfa_get_mesh()) and fields.
- * Smoothing and adaptation keep a closed surface's volume to round-off. The tool's
+ * Smoothing and adaptation keep the volume of every closed component (each bubble, each
+ * drop on its own) to round-off. The tool's
  * `surfadapt enright` and `surfadapt vortex` follow exactly this schedule.
  *
  * @par Conventions
@@ -158,9 +159,9 @@ enum sfa_param {
         along its normal n by w/4 n.(U_v - mean of U_q over its neighbours q), with U the
         umbrella vector (mean of the neighbours minus the vertex): a step of bi-Laplacian
         normal diffusion, which flattens jagged fans (noise at the scale of an edge) and
-        barely moves smoothly curved ones; features never move. On a closed surface the
-        enclosed volume is restored after each sweep, so the motion removes noise without
-        shrinking the body; an open surface is not corrected. For flows that grow noise,
+        barely moves smoothly curved ones; features never move. Each closed component's
+        enclosed volume is restored after each sweep (::SFA_PARAM_VOLUME_CORRECTION), so
+        the motion removes noise without shrinking the body; open ones are not corrected. For flows that grow noise,
         like the second half of the Enright test. A weight, in [0, 1]; default 0. */
     SFA_PARAM_DENOISE = 18,
     /** The most passes of repair and optimization one sfa_adapt() call makes; fewer if a
@@ -175,7 +176,15 @@ enum sfa_param {
         3 % of an adaptation), and up to about 10 % of the adaptation time where much of it
         is (the Enright test at its most stretched). A host whose surface cannot thin out
         may set 0. A flag, 0 or 1; default 1. */
-    SFA_PARAM_CROSSING_GUARD = 20
+    SFA_PARAM_CROSSING_GUARD = 20,
+    /** 1: after their own operations, sfa_smooth() (after each sweep) and sfa_adapt() give
+        every closed component (bubble, drop) its enclosed volume back, each on its own by
+        an offset of its smooth vertices along their normals: no volume moves from one
+        component to another, and open components are not corrected. 0: no correction, so
+        that what the operations alone do to the volumes can be seen. Either way
+        ::SFA_MEASURE_VOLUME_CORRECTION reports how far the operations left a volume.
+        A flag, 0 or 1; default 1. */
+    SFA_PARAM_VOLUME_CORRECTION = 21
 };
 
 /** Quantities for sfa_measure(). */
@@ -217,7 +226,13 @@ enum sfa_measure_quantity {
         the surface passes through itself, as where it was folded over or two parts
         collided. A sharp edge or cusp, however near 180 its ::SFA_MEASURE_MAX_NORMAL_TURN,
         counts nothing. Costs about a sort of the triangles. */
-    SFA_MEASURE_SELF_INTERSECTIONS = 13
+    SFA_MEASURE_SELF_INTERSECTIONS = 13,
+    /** The largest relative volume change |dV| / V of any closed component that the
+        operations of the last sfa_smooth() (any of its sweeps) or sfa_adapt() call made,
+        before the correction of ::SFA_PARAM_VOLUME_CORRECTION took it back: how close the
+        operations themselves come to conserving each volume. 0 before the first such call;
+        it needs no mesh set. Dimensionless. */
+    SFA_MEASURE_VOLUME_CORRECTION = 14
 };
 
 /** One adaptive surface. Opaque; create with sfa_create(), free with sfa_destroy(). */
@@ -446,9 +461,10 @@ int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t, double dt
  * that would pass through another part of the surface (::SFA_PARAM_CROSSING_GUARD, on by
  * default: where a sheet is thinner than an edge, its other side is that near; such places
  * are found by the last sfa_adapt(), or by this call if the mesh was set since). After
- * each sweep a closed surface
- * gets its enclosed volume back by a common offset of its smooth vertices along their
- * normals (a correction in the primary space), so smoothing alone never changes the volume.
+ * each sweep every closed component gets its own enclosed volume back by an offset of its
+ * smooth vertices along their normals (a correction in the primary space), so smoothing
+ * never changes a bubble's volume (::SFA_PARAM_VOLUME_CORRECTION switches the correction
+ * off; ::SFA_MEASURE_VOLUME_CORRECTION tells how far the sweeps alone moved a volume).
  * Fields are interpolated at the new positions. Connectivity and vertex order do not
  * change, so host arrays stay valid.
  * @param s          the surface.
@@ -465,8 +481,8 @@ int sfa_smooth(sfa_surface *s, int32_t iterations);
  * 8), until a pass changes the connectivity around at most 1 in 100 vertices: edge splitting (§4.1), edge
  * contraction (§4.2), anisotropic edge flipping (§3.3) and two smoothing sweeps (as
  * sfa_smooth()), each after a fresh analysis. Every
- * threshold is a parameter (§4.3). A closed surface ends with the enclosed volume it
- * started with (to round-off). Corners never move; ridge vertices stay on their ridge
+ * threshold is a parameter (§4.3). Every closed component ends with the enclosed volume it
+ * started with (to round-off), each on its own (::SFA_PARAM_VOLUME_CORRECTION). Corners never move; ridge vertices stay on their ridge
  * curves; boundaries stay boundaries. With ::SFA_PARAM_CROSSING_GUARD (on by default),
  * splits, contractions, flips and sweeps are kept from passing the surface through itself:
  * where a sheet is thinner than an edge (the filaments of a strong vortex), an operation
@@ -553,6 +569,46 @@ int sfa_get_ridge_edges(const sfa_surface *s, int32_t capacity, int32_t *edges, 
  */
 int sfa_measure(const sfa_surface *s, int quantity, double *value);
 
+/* ------------------------------------------------------------- components */
+
+/**
+ * The number of connected components of the current mesh (vertices joined by edges):
+ * the bubbles, drops and sheets of an interface. Each closed component keeps its own
+ * enclosed volume through sfa_smooth() and sfa_adapt() (see ::SFA_PARAM_VOLUME_CORRECTION).
+ * @param s     the surface.
+ * @param count receives the number (owned by the caller).
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer), ::SFA_ERR_STATE (no mesh),
+ *         ::SFA_ERR_MEMORY.
+ */
+int sfa_get_component_count(const sfa_surface *s, int32_t *count);
+
+/**
+ * The component of every current vertex, 0 to count - 1, numbered in the order in which
+ * each component's first vertex comes in sfa_get_mesh() order (so the numbering is
+ * deterministic; it is 0-based whatever the index base).
+ * @param s                the surface.
+ * @param capacity         number of ints `vertex_component` has room for (at least the
+ *                         vertex count).
+ * @param vertex_component receives one id per vertex (owned by the caller).
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, capacity too small: nothing
+ *         written), ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY.
+ */
+int sfa_get_components(const sfa_surface *s, int32_t capacity, int32_t *vertex_component);
+
+/**
+ * sfa_measure() restricted to one component (as numbered by sfa_get_components()): every
+ * quantity that measures the mesh (volume, area, angles, edge lengths, aspect ratio,
+ * normal turn, self-intersections within the component).
+ * @param s         the surface.
+ * @param component 0 to the component count - 1.
+ * @param quantity  one of ::sfa_measure_quantity.
+ * @param value     receives the value (owned by the caller).
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, unknown quantity, a quantity of the
+ *         calls rather than of the mesh (the seconds, ::SFA_MEASURE_VOLUME_CORRECTION), no
+ *         such component), ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY.
+ */
+int sfa_measure_component(const sfa_surface *s, int32_t component, int quantity, double *value);
+
 /* ---------------------------------------------------------- vertex fields */
 
 /**
@@ -618,6 +674,10 @@ typedef struct sfa_api {
                            int32_t index_base);             /**< sfa_get_ridge_edges() */
     int (*get_param_bounds)(int key, double *lowest, double *highest); /**< sfa_get_param_bounds() */
     int (*version_number)(void);                              /**< sfa_version_number() */
+    int (*get_component_count)(const sfa_surface *s, int32_t *count); /**< sfa_get_component_count() */
+    int (*get_components)(const sfa_surface *s, int32_t capacity, int32_t *vertex_component); /**< sfa_get_components() */
+    int (*measure_component)(const sfa_surface *s, int32_t component, int quantity,
+                             double *value);                  /**< sfa_measure_component() */
 } sfa_api;
 
 /**

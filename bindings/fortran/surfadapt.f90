@@ -58,6 +58,7 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_PARAM_DENOISE = 18
   integer(c_int), parameter, public :: SFA_PARAM_ADAPT_PASSES = 19
   integer(c_int), parameter, public :: SFA_PARAM_CROSSING_GUARD = 20
+  integer(c_int), parameter, public :: SFA_PARAM_VOLUME_CORRECTION = 21
 
   ! --------------------------------------------------- enum sfa_measure_quantity
   integer(c_int), parameter, public :: SFA_MEASURE_VOLUME = 0
@@ -74,6 +75,7 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_MEASURE_SECONDS_FLIPPING = 11
   integer(c_int), parameter, public :: SFA_MEASURE_SECONDS_REPAIR = 12
   integer(c_int), parameter, public :: SFA_MEASURE_SELF_INTERSECTIONS = 13
+  integer(c_int), parameter, public :: SFA_MEASURE_VOLUME_CORRECTION = 14
 
   public :: sfa_version_string, sfa_abi_version, sfa_version_number, sfa_status_string
   public :: sfa_create, sfa_destroy, sfa_last_error
@@ -82,6 +84,7 @@ module surfadapt
   public :: sfa_set_velocities, sfa_move, sfa_advect
   public :: sfa_smooth, sfa_adapt
   public :: sfa_get_feature_ranks, sfa_measure
+  public :: sfa_get_component_count, sfa_get_components, sfa_measure_component
   public :: sfa_add_field, sfa_get_field
   public :: sfa_get_vertex_frames, sfa_get_ridge_edges
   public :: sfa_get_api
@@ -253,6 +256,33 @@ module surfadapt
       real(c_double), intent(out) :: value
       integer(c_int) :: sfa_measure
     end function sfa_measure
+
+    !> The number of connected components (bubbles, drops, sheets) of the current mesh.
+    function sfa_get_component_count(s, count) bind(C, name='sfa_get_component_count')
+      import :: c_ptr, c_int, c_int32_t
+      type(c_ptr), value :: s
+      integer(c_int32_t), intent(out) :: count
+      integer(c_int) :: sfa_get_component_count
+    end function sfa_get_component_count
+
+    !> The component of each vertex, 0 to count - 1 (0-based whatever the index base).
+    function sfa_get_components(s, capacity, vertex_component) bind(C, name='sfa_get_components')
+      import :: c_ptr, c_int, c_int32_t
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: capacity
+      integer(c_int32_t), intent(out) :: vertex_component(*)
+      integer(c_int) :: sfa_get_components
+    end function sfa_get_components
+
+    !> sfa_measure restricted to one component (0-based, as sfa_get_components numbers them).
+    function sfa_measure_component(s, component, quantity, value) bind(C, name='sfa_measure_component')
+      import :: c_ptr, c_int, c_int32_t, c_double
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: component
+      integer(c_int), value :: quantity
+      real(c_double), intent(out) :: value
+      integer(c_int) :: sfa_measure_component
+    end function sfa_measure_component
 
     function sfa_add_field(s, ncomp, values, field_id) bind(C, name='sfa_add_field')
       import :: c_int, c_int32_t, c_double, c_ptr

@@ -8,8 +8,9 @@
 #include "adapt/volume.hpp"
 #include "fields/carried_fields.hpp"
 #include "geometry/guard_listener.hpp"
-#include "geometry/measures.hpp"
 #include "geometry/tracked_analysis.hpp"
+#include "mesh/components.hpp"
+#include "mesh/vertex_labels.hpp"
 
 namespace sfa {
 namespace {
@@ -22,11 +23,14 @@ public:
     Adaptation(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
                SurfaceAnalysis &workspace, PhaseTimes &seconds)
         : mesh_(mesh), settings_(settings), seconds_(seconds), geometry_(workspace), edit_(mesh),
-          carried_fields_(fields), features_(detected_features()), tracked_(geometry_, mesh), guard_listener_(guard_)
+          carried_fields_(fields), features_(detected_features()), tracked_(geometry_, mesh), guard_listener_(guard_),
+          components_(connected_components(mesh)), component_of_(components_.of_vertex),
+          volumes_(component_volumes(mesh, components_.of_vertex, components_.count))
     {
         edit_.attach(carried_fields_);
         edit_.attach(features_);
         edit_.attach(tracked_);
+        edit_.attach(component_of_);
         // Where the surface is thinner than an edge, no step may carry it through itself.
         if (settings.crossing_guard) {
             guard_ = timed(seconds_.analysis, [&] { return CrossingGuard(near_facing_sheet(mesh)); });
@@ -38,9 +42,9 @@ public:
     // flips it made, and adds them to `counts`.
     int32_t pass(AdaptCounts &counts);
 
-    // The enclosed volume back (if the surface is closed) and, if the connectivity changed,
-    // the locality order; the vertices the guard watched, numbered as the mesh is now.
-    std::vector<char> finish(const AdaptCounts &counts, bool closed, double volume);
+    // Each closed component's enclosed volume back and, if the connectivity changed, the
+    // locality order; the vertices the guard watched, numbered as the mesh is now.
+    std::vector<char> finish(AdaptCounts &counts);
 
 private:
     const CrossingGuard *guard() const { return settings_.crossing_guard ? &guard_ : nullptr; }
@@ -78,6 +82,11 @@ private:
     TrackedAnalysis tracked_;
     CrossingGuard guard_;
     GuardListener guard_listener_;
+    // Each component keeps its own volume: the components as the call found them, followed
+    // through every change (a vertex's component never changes: no change of topology).
+    const Components components_;
+    VertexLabels component_of_;
+    const std::vector<double> volumes_;
 };
 
 int32_t Adaptation::pass(AdaptCounts &counts)
@@ -111,13 +120,14 @@ int32_t Adaptation::pass(AdaptCounts &counts)
     return splits + contractions + flips;
 }
 
-std::vector<char> Adaptation::finish(const AdaptCounts &counts, bool closed, double volume)
+std::vector<char> Adaptation::finish(AdaptCounts &counts)
 {
-    if (closed) {
-        // The offset moves vertices along their normals, not over the surface: their fields
+    {
+        // The offsets move vertices along their normals, not over the surface: their fields
         // stay with them.
         PhaseClock clock(seconds_.smoothing);
-        restore_enclosed_volume(mesh_, features_.ranks(), volume);
+        counts.volume_correction = restore_enclosed_volumes(mesh_, features_.ranks(), component_of_.labels(), volumes_,
+                                                            components_.closed, settings_.volume_correction);
     }
     // New vertices and triangles were appended where they were made: put neighbours next
     // to each other in memory again, for every loop until the next adaptation. Only what
@@ -126,6 +136,7 @@ std::vector<char> Adaptation::finish(const AdaptCounts &counts, bool closed, dou
         PhaseClock clock(seconds_.repair);
         edit_.detach(tracked_);
         edit_.detach(features_);
+        edit_.detach(component_of_);
         edit_.order_for_locality();
     }
     return settings_.crossing_guard ? guard_.watched() : std::vector<char>();
@@ -137,8 +148,6 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
                           std::vector<char> &near_sheet, SurfaceAnalysis &workspace)
 {
     AdaptCounts counts;
-    const bool closed = mesh.is_closed();
-    const double volume = enclosed_volume(mesh);
     Adaptation adaptation(mesh, fields, settings, workspace, counts.seconds);
     while (counts.passes < settings.max_passes) {
         // Settled: after the first pass or two, the changes of a pass dwindle to a few edges
@@ -149,7 +158,7 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
         if (adaptation.pass(counts) <= settled_fraction * mesh.num_vertices())
             break;
     }
-    near_sheet = adaptation.finish(counts, closed, volume);
+    near_sheet = adaptation.finish(counts);
     return counts;
 }
 

@@ -12,14 +12,18 @@ namespace sfa {
 
 struct AdaptCounts {
     int32_t passes = 0, splits = 0, contractions = 0, flips = 0;
+    // The largest relative volume change of a closed component that the operations made
+    // (restore_enclosed_volumes), and the correction took back if it was on.
+    double volume_correction = 0;
     PhaseTimes seconds;
 };
 
 // Features are detected once, then carried through the call (carried_features.hpp). Each
 // pass: split, contract, flip, then smooth, every step on the geometry as it then is
 // (analysed anew where the step before changed it); until a pass changes the connectivity
-// of at most 1 in 100 vertices or max_passes were made. A closed surface then gets its
-// enclosed volume back (restore_enclosed_volume), and if edges were split or contracted,
+// of at most 1 in 100 vertices or max_passes were made. Each closed component then gets
+// its own enclosed volume back (restore_enclosed_volumes, unless settings say not to), and
+// if edges were split or contracted,
 // the mesh is renumbered for locality (locality_order.hpp). Every change goes through one
 // edit (mesh/mesh_edit.hpp), which carries the fields (one value set per vertex) and
 // everything else that lives on the mesh. The mesh stays dense and valid. The seconds of

@@ -35,6 +35,7 @@ const ParamSpec specs[] = {
     {"SFA_PARAM_DENOISE", "a weight", 0, RangeKind::closed_interval, 0, 1},
     {"SFA_PARAM_ADAPT_PASSES", "passes", 8, RangeKind::whole_number, 1, 100},
     {"SFA_PARAM_CROSSING_GUARD", "a flag", 1, RangeKind::flag, 0, 1},
+    {"SFA_PARAM_VOLUME_CORRECTION", "a flag", 1, RangeKind::flag, 0, 1},
 };
 static_assert(sizeof specs / sizeof specs[0] == static_cast<size_t>(Param::count), "one spec per key");
 

@@ -29,6 +29,7 @@ enum class Param : int {
     denoise,
     adapt_passes,
     crossing_guard,
+    volume_correction,
     count
 };
 

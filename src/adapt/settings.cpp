@@ -51,7 +51,8 @@ FlipSettings flip_settings(const Parameters &p)
 
 SmoothSettings smooth_settings(const Parameters &p)
 {
-    return {feature_thresholds(p), metric_bounds(p), p.get(Param::denoise), p.get(Param::crossing_guard) != 0};
+    return {feature_thresholds(p), metric_bounds(p), p.get(Param::denoise), p.get(Param::crossing_guard) != 0,
+            p.get(Param::volume_correction) != 0};
 }
 
 AdaptSettings adapt_settings(const Parameters &p, double default_edge_length)
@@ -64,7 +65,8 @@ AdaptSettings adapt_settings(const Parameters &p, double default_edge_length)
             static_cast<int>(p.get(Param::adapt_passes)),
             smoothing_sweeps_per_pass,
             p.get(Param::denoise),
-            p.get(Param::crossing_guard) != 0};
+            p.get(Param::crossing_guard) != 0,
+            p.get(Param::volume_correction) != 0};
 }
 
 } // namespace sfa

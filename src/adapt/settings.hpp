@@ -31,6 +31,7 @@ struct SmoothSettings {
     MetricBounds metric;
     double denoise;      // weight in every sweep (smoothing_sweep)
     bool crossing_guard; // no sweep passes the surface through itself (crossing_guard.hpp)
+    bool volume_correction; // closed components get their volumes back (restore_enclosed_volumes)
 };
 
 // sfa_adapt.
@@ -43,6 +44,7 @@ struct AdaptSettings {
     int smoothing_sweeps; // per iteration
     double denoise;       // weight in every sweep (smoothing_sweep)
     bool crossing_guard;  // no step passes the surface through itself (crossing_guard.hpp)
+    bool volume_correction; // closed components get their volumes back (restore_enclosed_volumes)
 };
 
 FeatureThresholds feature_thresholds(const Parameters &parameters);

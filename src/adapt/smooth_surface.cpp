@@ -3,16 +3,20 @@
 #include "adapt/smooth.hpp"
 #include "adapt/volume.hpp"
 #include "fields/carried_fields.hpp"
-#include "geometry/measures.hpp"
+#include "mesh/components.hpp"
+
+#include <algorithm>
 
 namespace sfa {
 
-PhaseTimes smooth_surface(TriMesh &mesh, std::vector<VertexField> &fields, const SmoothSettings &settings,
-                          int32_t sweeps, const std::vector<char> &near_sheet, SurfaceAnalysis &workspace)
+SmoothResult smooth_surface(TriMesh &mesh, std::vector<VertexField> &fields, const SmoothSettings &settings,
+                            int32_t sweeps, const std::vector<char> &near_sheet, SurfaceAnalysis &workspace)
 {
-    PhaseTimes seconds;
-    const double volume = enclosed_volume(mesh);
-    const bool closed = mesh.is_closed();
+    SmoothResult result;
+    PhaseTimes &seconds = result.seconds;
+    // Each component keeps its own volume (the connectivity does not change).
+    const Components components = connected_components(mesh);
+    const std::vector<double> volumes = component_volumes(mesh, components.of_vertex, components.count);
     CrossingGuard guard;
     if (settings.crossing_guard)
         guard = timed(seconds.analysis, [&] {
@@ -28,10 +32,12 @@ PhaseTimes smooth_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
         std::vector<Vec3> moved =
             smoothing_sweep(mesh, analysis, settings.denoise, settings.crossing_guard ? &guard : nullptr);
         edit.move(moved);
-        if (closed)
-            restore_enclosed_volume(mesh, analysis.features.rank, volume);
+        result.volume_correction =
+            std::max(result.volume_correction,
+                     restore_enclosed_volumes(mesh, analysis.features.rank, components.of_vertex, volumes,
+                                              components.closed, settings.volume_correction));
     }
-    return seconds;
+    return result;
 }
 
 } // namespace sfa

@@ -10,13 +10,20 @@
 
 namespace sfa {
 
+struct SmoothResult {
+    PhaseTimes seconds;
+    // The largest relative volume change of a closed component that a sweep made
+    // (restore_enclosed_volumes), and the correction took back if it was on.
+    double volume_correction = 0;
+};
+
 // `sweeps` times: the surface analysed, one sweep (smoothing_sweep) made through an edit
-// that carries the fields, and a closed surface's enclosed volume restored. With the
+// that carries the fields, and each closed component's enclosed volume restored. With the
 // crossing guard, the vertices watched are those of `near_sheet` if it has one mark per
 // vertex (the last adaptation's findings: a flow adapts every few steps, and a sheet thins
 // slowly), else this surface's own. The analyses are made in `workspace` (as for
-// adapt_surface). Returns the seconds of each phase.
-PhaseTimes smooth_surface(TriMesh &mesh, std::vector<VertexField> &fields, const SmoothSettings &settings,
+// adapt_surface).
+SmoothResult smooth_surface(TriMesh &mesh, std::vector<VertexField> &fields, const SmoothSettings &settings,
                           int32_t sweeps, const std::vector<char> &near_sheet, SurfaceAnalysis &workspace);
 
 } // namespace sfa

@@ -4,52 +4,105 @@
 #include "mesh/parallel.hpp"
 #include "motion/fold_time.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace sfa {
 namespace {
-constexpr int max_newton_steps = 8;
-} // namespace
 
-void restore_enclosed_volume(TriMesh &mesh, const std::vector<int8_t> &rank, double volume)
+constexpr int max_newton_steps = 8;
+
+double det(const Vec3 &x, const Vec3 &y, const Vec3 &z) { return x.dot(y.cross(z)); }
+
+// The offset o that makes the six-fold volume c0 + o (c1 + o (c2 + o c3)) equal `six_volume`.
+double offset_for(const Eigen::Vector4d &c, double six_volume)
 {
-    // Every smooth vertex moves by the offset o along its unit volume gradient n_v; the six-
-    // fold volume is then the cubic sum over the triangles of det(p_0 + o n_0, p_1 + o n_1,
-    // p_2 + o n_2). One pass gathers its four coefficients, and Newton's method on the cubic
-    // finds the offset to round-off without touching the mesh again.
-    const int32_t n = mesh.num_vertices();
-    std::vector<Vec3> normal(n, Vec3::Zero());
-#pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t v = 0; v < n; ++v)
-        if (rank[v] == 0)
-            normal[v] = volume_gradient(mesh, v).normalized();
-    const auto det = [](const Vec3 &x, const Vec3 &y, const Vec3 &z) { return x.dot(y.cross(z)); };
-    const Eigen::Vector4d c = ordered_sum(mesh.num_triangles(), Eigen::Vector4d::Zero().eval(), [&](int32_t k) {
-        const Triangle &t = mesh.tri[k];
-        const Vec3 &p0 = mesh.pos[t[0]], &p1 = mesh.pos[t[1]], &p2 = mesh.pos[t[2]];
-        const Vec3 &n0 = normal[t[0]], &n1 = normal[t[1]], &n2 = normal[t[2]];
-        return Eigen::Vector4d(det(p0, p1, p2), det(n0, p1, p2) + det(p0, n1, p2) + det(p0, p1, n2),
-                               det(p0, n1, n2) + det(n0, p1, n2) + det(n0, n1, p2), det(n0, n1, n2));
-    });
-    const auto six_volume = [&](double o) { return c[0] + o * (c[1] + o * (c[2] + o * c[3])); };
+    const auto volume_at = [&](double o) { return c[0] + o * (c[1] + o * (c[2] + o * c[3])); };
     const auto slope = [&](double o) { return c[1] + o * (2 * c[2] + o * 3 * c[3]); };
-    if (!(c[1] > 0))
-        return; // nothing can move: every vertex is a feature
     double offset = 0, last_missing = std::numeric_limits<double>::infinity();
     for (int step = 0; step < max_newton_steps; ++step) {
-        const double missing = 6 * volume - six_volume(offset);
+        const double missing = six_volume - volume_at(offset);
         if (!(std::abs(missing) < last_missing))
             break; // at round-off
         last_missing = std::abs(missing);
         offset += missing / slope(offset);
     }
+    return offset;
+}
+
+} // namespace
+
+std::vector<double> component_volumes(const TriMesh &mesh, const std::vector<int32_t> &label, int32_t count)
+{
+    std::vector<double> volume = ordered_group_sums(
+        mesh.num_triangles(), count, 0.0, [&](int32_t t) { return label[mesh.tri[t][0]]; },
+        [&](int32_t t) {
+            const Triangle &c = mesh.tri[t];
+            return det(mesh.pos[c[0]], mesh.pos[c[1]], mesh.pos[c[2]]);
+        });
+    for (double &v : volume)
+        v /= 6;
+    return volume;
+}
+
+double restore_enclosed_volumes(TriMesh &mesh, const std::vector<int8_t> &rank, const std::vector<int32_t> &label,
+                                const std::vector<double> &volume, const std::vector<char> &closed, bool correct)
+{
+    // Every smooth vertex moves by its component's offset o along its unit volume gradient
+    // n_v; the six-fold volume of a component is then the cubic sum over its triangles of
+    // det(p_0 + o n_0, p_1 + o n_1, p_2 + o n_2). One pass gathers the four coefficients of
+    // every component, and Newton's method on each cubic finds its offset to round-off
+    // without touching the mesh again.
+    const int32_t n = mesh.num_vertices(), count = static_cast<int32_t>(volume.size());
+    std::vector<Vec3> normal(n, Vec3::Zero());
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t v = 0; v < n; ++v)
+        if (rank[v] == 0 && closed[label[v]])
+            normal[v] = volume_gradient(mesh, v).normalized();
+    const std::vector<Eigen::Vector4d> coefficients = ordered_group_sums(
+        mesh.num_triangles(), count, Eigen::Vector4d::Zero().eval(), [&](int32_t t) { return label[mesh.tri[t][0]]; },
+        [&](int32_t k) {
+            const Triangle &t = mesh.tri[k];
+            const Vec3 &p0 = mesh.pos[t[0]], &p1 = mesh.pos[t[1]], &p2 = mesh.pos[t[2]];
+            const Vec3 &n0 = normal[t[0]], &n1 = normal[t[1]], &n2 = normal[t[2]];
+            return Eigen::Vector4d(det(p0, p1, p2), det(n0, p1, p2) + det(p0, n1, p2) + det(p0, p1, n2),
+                                   det(p0, n1, n2) + det(n0, p1, n2) + det(n0, n1, p2), det(n0, n1, n2));
+        });
+    double largest_change = 0;
+    std::vector<double> offset(count, 0);
+    for (int32_t c = 0; c < count; ++c) {
+        if (!closed[c])
+            continue;
+        const Eigen::Vector4d &k = coefficients[c];
+        largest_change = std::max(largest_change, std::abs(6 * volume[c] - k[0]) / std::abs(6 * volume[c]));
+        if (correct && k[1] > 0) // else nothing can move: every vertex is a feature
+            offset[c] = offset_for(k, 6 * volume[c]);
+    }
+    if (!correct || std::all_of(offset.begin(), offset.end(), [](double o) { return o == 0; }))
+        return largest_change;
     std::vector<Vec3> moved(n);
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < n; ++v)
-        moved[v] = mesh.pos[v] + offset * normal[v];
-    if (first_folded_triangle(mesh, moved) < 0)
-        mesh.pos.swap(moved);
+        moved[v] = offset[label[v]] != 0 ? Vec3(mesh.pos[v] + offset[label[v]] * normal[v]) : mesh.pos[v];
+    // A component whose offset folds a triangle keeps its shape: each round leaves one more
+    // component as it was. A triangle flat before any offset (which no offset unfolds)
+    // leaves every component as it was. So there are at most as many rounds as components.
+    std::vector<char> kept(count, 0);
+    for (int32_t folded = first_folded_triangle(mesh, moved); folded >= 0;
+         folded = first_folded_triangle(mesh, moved)) {
+        const int32_t c = label[mesh.tri[folded][0]];
+        if (kept[c]) {
+            moved = mesh.pos;
+            break;
+        }
+        kept[c] = 1;
+        for (int32_t v = 0; v < n; ++v)
+            if (label[v] == c)
+                moved[v] = mesh.pos[v];
+    }
+    mesh.pos.swap(moved);
+    return largest_change;
 }
 
 } // namespace sfa

@@ -1,4 +1,4 @@
-// Keeping the enclosed volume of a closed surface through adaptation.
+// Keeping the enclosed volume of every closed component (bubble, drop) on its own.
 #pragma once
 
 #include "mesh/tri_mesh.hpp"
@@ -8,16 +8,25 @@
 
 namespace sfa {
 
-// Moves every smooth vertex (rank 0) along its outward normal (the direction of its volume
-// gradient) by one common distance, so that the enclosed volume becomes `volume` again.
-// Splitting and contraction put vertices on the quadric error minimum, which smooths the
-// surface and so changes its volume at second order in the edge length (+1.1 % when a
-// coarse model like spot is refined to half its edge length); a uniform offset is the
-// smallest change of shape that gives it back. Features do not move. The volume is an
+// The enclosed volume of each component: label[v] in [0, count) names the component of
+// vertex v, and a triangle belongs to its first corner's.
+std::vector<double> component_volumes(const TriMesh &mesh, const std::vector<int32_t> &label, int32_t count);
+
+// For every closed component c (closed[c]) whose volume is no longer volume[c]: moves its
+// smooth vertices (rank 0) along their outward normals (the direction of the volume
+// gradient) by one distance, so that the component encloses volume[c] again. Splitting
+// and contraction put vertices on the quadric error minimum, which smooths the surface and
+// so changes its volume at second order in the edge length (+1.1 % when a coarse model
+// like spot is refined to half its edge length); a uniform offset per component is the
+// smallest change of shape that gives it back, and no volume moves from one component to
+// another. Features do not move; open components are not corrected. The volume is an
 // exact cubic in the offset, solved by Newton's method, so the result is exact to
-// round-off; nothing
-// moves if the offset would fold a triangle. Only for closed surfaces (an open one
-// encloses no volume).
-void restore_enclosed_volume(TriMesh &mesh, const std::vector<int8_t> &rank, double volume);
+// round-off; a component whose offset would fold a triangle is left as it is. With
+// `correct` false, nothing moves.
+// Returns the largest relative volume change |V - volume[c]| / |volume[c]| of a closed
+// component before the correction: how far the operations themselves came from keeping
+// the volume.
+double restore_enclosed_volumes(TriMesh &mesh, const std::vector<int8_t> &rank, const std::vector<int32_t> &label,
+                                const std::vector<double> &volume, const std::vector<char> &closed, bool correct);
 
 } // namespace sfa

@@ -25,15 +25,16 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
         TriMesh &mesh = s->mesh;
         const std::vector<Vec3> saved_positions = mesh.pos;
         std::vector<VertexField> fields = s->fields;
-        PhaseTimes seconds;
+        SmoothResult result;
         try {
-            seconds = smooth_surface(mesh, fields, settings, iterations, s->near_sheet, s->analysis_workspace);
+            result = smooth_surface(mesh, fields, settings, iterations, s->near_sheet, s->analysis_workspace);
         } catch (...) {
             std::copy(saved_positions.begin(), saved_positions.end(), mesh.pos.begin()); // same size: no allocation
             throw;
         }
         s->fields.swap(fields);
-        s->seconds_spent += seconds;
+        s->seconds_spent += result.seconds;
+        s->volume_correction = result.volume_correction;
     });
 }
 
@@ -72,6 +73,7 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
         s->velocity.swap(velocity);
         s->near_sheet.swap(near_sheet);
         s->seconds_spent += counts.seconds;
+        s->volume_correction = counts.volume_correction;
     });
 }
 

@@ -4,6 +4,7 @@
 #include "adapt/settings.hpp"
 #include "geometry/measures.hpp"
 #include "geometry/self_intersection.hpp"
+#include "mesh/components.hpp"
 
 using namespace sfa;
 
@@ -27,6 +28,46 @@ SurfaceAnalysis current_analysis(const sfa_surface *s)
     return analyze_surface(s->mesh, feature_thresholds(s->params), metric_bounds(s->params));
 }
 
+void require_known_quantity(int quantity)
+{
+    if (quantity < SFA_MEASURE_VOLUME || quantity > SFA_MEASURE_VOLUME_CORRECTION) {
+        char message[120];
+        std::snprintf(message, sizeof message, "unknown quantity %d (quantities are 0 to %d, enum sfa_measure_quantity)",
+                      quantity, SFA_MEASURE_VOLUME_CORRECTION);
+        fail(Status::argument, message);
+    }
+}
+
+// The quantities that are measures of the mesh itself (not of the calls made on it).
+bool is_mesh_measure(int quantity)
+{
+    switch (quantity) {
+    case SFA_MEASURE_SECONDS_ANALYSIS:
+    case SFA_MEASURE_SECONDS_SMOOTHING:
+    case SFA_MEASURE_SECONDS_FLIPPING:
+    case SFA_MEASURE_SECONDS_REPAIR:
+    case SFA_MEASURE_VOLUME_CORRECTION: return false;
+    default: return true;
+    }
+}
+
+double mesh_measure(const TriMesh &mesh, int quantity)
+{
+    switch (quantity) {
+    case SFA_MEASURE_VOLUME: return enclosed_volume(mesh);
+    case SFA_MEASURE_AREA: return surface_area(mesh);
+    case SFA_MEASURE_MIN_ANGLE: return angle_range(mesh).min_degrees;
+    case SFA_MEASURE_MAX_ANGLE: return angle_range(mesh).max_degrees;
+    case SFA_MEASURE_MEAN_EDGE_LENGTH: return edge_lengths(mesh).mean;
+    case SFA_MEASURE_MAX_ASPECT_RATIO: return max_aspect_ratio(mesh);
+    case SFA_MEASURE_MIN_EDGE_LENGTH: return edge_lengths(mesh).min;
+    case SFA_MEASURE_MAX_EDGE_LENGTH: return edge_lengths(mesh).max;
+    case SFA_MEASURE_MAX_NORMAL_TURN: return max_normal_turn_degrees(mesh);
+    case SFA_MEASURE_SELF_INTERSECTIONS: return self_intersection_count(mesh);
+    }
+    fail(Status::internal, "a mesh measure without a formula");
+}
+
 } // namespace
 
 extern "C" {
@@ -35,33 +76,41 @@ SFA_EXPORT int sfa_measure(const sfa_surface *s, int quantity, double *value)
 {
     return call(s, "sfa_measure", [&] {
         require(value != nullptr, "value is NULL");
-        if (quantity < SFA_MEASURE_VOLUME || quantity > SFA_MEASURE_SELF_INTERSECTIONS) {
-            char message[120];
-            std::snprintf(message, sizeof message,
-                          "unknown quantity %d (quantities are 0 to %d, enum sfa_measure_quantity)", quantity,
-                          SFA_MEASURE_SELF_INTERSECTIONS);
-            fail(Status::argument, message);
-        }
+        require_known_quantity(quantity);
         switch (quantity) {
         case SFA_MEASURE_SECONDS_ANALYSIS: *value = s->seconds_spent.analysis; return;
         case SFA_MEASURE_SECONDS_SMOOTHING: *value = s->seconds_spent.smoothing; return;
         case SFA_MEASURE_SECONDS_FLIPPING: *value = s->seconds_spent.flipping; return;
         case SFA_MEASURE_SECONDS_REPAIR: *value = s->seconds_spent.repair; return;
+        case SFA_MEASURE_VOLUME_CORRECTION: *value = s->volume_correction; return;
         }
         require_mesh(s);
-        const TriMesh &mesh = s->mesh;
-        switch (quantity) {
-        case SFA_MEASURE_VOLUME: *value = enclosed_volume(mesh); break;
-        case SFA_MEASURE_AREA: *value = surface_area(mesh); break;
-        case SFA_MEASURE_MIN_ANGLE: *value = angle_range(mesh).min_degrees; break;
-        case SFA_MEASURE_MAX_ANGLE: *value = angle_range(mesh).max_degrees; break;
-        case SFA_MEASURE_MEAN_EDGE_LENGTH: *value = edge_lengths(mesh).mean; break;
-        case SFA_MEASURE_MAX_ASPECT_RATIO: *value = max_aspect_ratio(mesh); break;
-        case SFA_MEASURE_MIN_EDGE_LENGTH: *value = edge_lengths(mesh).min; break;
-        case SFA_MEASURE_MAX_EDGE_LENGTH: *value = edge_lengths(mesh).max; break;
-        case SFA_MEASURE_MAX_NORMAL_TURN: *value = max_normal_turn_degrees(mesh); break;
-        case SFA_MEASURE_SELF_INTERSECTIONS: *value = self_intersection_count(mesh); break;
+        *value = mesh_measure(s->mesh, quantity);
+    });
+}
+
+SFA_EXPORT int sfa_measure_component(const sfa_surface *s, int32_t component, int quantity, double *value)
+{
+    return call(s, "sfa_measure_component", [&] {
+        require(value != nullptr, "value is NULL");
+        require_known_quantity(quantity);
+        if (!is_mesh_measure(quantity)) {
+            char message[160];
+            std::snprintf(message, sizeof message,
+                          "quantity %d measures the calls made on the surface, not one of its components: ask "
+                          "sfa_measure",
+                          quantity);
+            fail(Status::argument, message);
         }
+        require_mesh(s);
+        const Components components = connected_components(s->mesh);
+        if (component < 0 || component >= components.count) {
+            char message[160];
+            std::snprintf(message, sizeof message, "there is no component %d: the surface has %d (numbered 0 to %d)",
+                          component, components.count, components.count - 1);
+            fail(Status::argument, message);
+        }
+        *value = mesh_measure(component_mesh(s->mesh, components, component), quantity);
     });
 }
 

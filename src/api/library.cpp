@@ -89,6 +89,9 @@ SFA_EXPORT const sfa_api *sfa_get_api(uint32_t abi_version)
         sfa_get_ridge_edges,
         sfa_get_param_bounds,
         sfa_version_number,
+        sfa_get_component_count,
+        sfa_get_components,
+        sfa_measure_component,
     };
     return abi_version == 1 ? &table_v1 : nullptr;
 }

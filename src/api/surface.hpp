@@ -21,6 +21,7 @@ struct sfa_surface {
     std::vector<sfa::Vec3> velocity; // empty until sfa_set_velocities
     std::vector<sfa::VertexField> fields;
     sfa::PhaseTimes seconds_spent; // by the successful sfa_smooth and sfa_adapt calls
+    double volume_correction = 0;  // SFA_MEASURE_VOLUME_CORRECTION of the last of them
     // The vertices near a facing sheet (geometry/crossing_guard.hpp) as the last sfa_adapt
     // found them, for the sfa_smooth calls until the next; empty if the connectivity
     // changed since (sfa_set_mesh).

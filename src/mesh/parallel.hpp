@@ -5,6 +5,7 @@
 // This header sits in the lowest layer because every layer loops.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -47,13 +48,36 @@ int32_t first_where(int32_t count, Bad &&bad)
     return first;
 }
 
+// The block of ordered_sum and ordered_group_sums.
+inline constexpr int32_t ordered_sum_block = 4096;
+
+// Per group g in [0, groups): the sum of term(i) over the i in [0, count) with
+// group_of(i) == g, rounded as ordered_sum rounds (with one group, its very result).
+// Allocates blocks x groups partial sums; group_of and term must not throw.
+template <class T, class GroupOf, class Term>
+std::vector<T> ordered_group_sums(int32_t count, int32_t groups, const T &zero, GroupOf &&group_of, Term &&term)
+{
+    constexpr int32_t block = ordered_sum_block;
+    const int32_t blocks = (count + block - 1) / block;
+    std::vector<T> partial(static_cast<size_t>(blocks) * groups, zero);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t b = 0; b < blocks; ++b)
+        for (int32_t i = b * block; i < count && i < (b + 1) * block; ++i)
+            partial[static_cast<size_t>(b) * groups + group_of(i)] += term(i);
+    std::vector<T> total(groups, zero);
+    for (int32_t b = 0; b < blocks; ++b)
+        for (int32_t g = 0; g < groups; ++g)
+            total[g] += partial[static_cast<size_t>(b) * groups + g];
+    return total;
+}
+
 // The sum of term(i) for i in [0, count): fixed blocks summed in order, in parallel, and
 // then the block sums in order, so that the rounding does not depend on the number of
 // threads. T is double or a fixed-size Eigen vector; term must not throw.
 template <class T, class Term>
 T ordered_sum(int32_t count, const T &zero, Term &&term)
 {
-    constexpr int32_t block = 4096;
+    constexpr int32_t block = ordered_sum_block;
     std::vector<T> partial((count + block - 1) / block, zero);
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t b = 0; b < static_cast<int32_t>(partial.size()); ++b) {

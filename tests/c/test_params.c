@@ -28,6 +28,7 @@ static double expected_default(int key)
     case SFA_PARAM_DENOISE: return 0;
     case SFA_PARAM_ADAPT_PASSES: return 8;
     case SFA_PARAM_CROSSING_GUARD: return 1;
+    case SFA_PARAM_VOLUME_CORRECTION: return 1;
     default: return NAN;
     }
 }
@@ -57,6 +58,7 @@ static double valid_value(int key)
     case SFA_PARAM_DENOISE: return 1;
     case SFA_PARAM_ADAPT_PASSES: return 1;
     case SFA_PARAM_CROSSING_GUARD: return 0;
+    case SFA_PARAM_VOLUME_CORRECTION: return 0;
     default: return NAN;
     }
 }
@@ -86,6 +88,7 @@ static int invalid_values(int key, double out[4])
     case SFA_PARAM_DENOISE: out[0] = -1e-9; out[1] = 1.0000001; return 2;
     case SFA_PARAM_ADAPT_PASSES: out[0] = 0; out[1] = 2.5; out[2] = 101; return 3;
     case SFA_PARAM_CROSSING_GUARD: out[0] = 0.5; out[1] = 2; out[2] = -1; return 3;
+    case SFA_PARAM_VOLUME_CORRECTION: out[0] = 0.5; out[1] = 2; out[2] = -1; return 3;
     default: return 0;
     }
 }
@@ -103,6 +106,7 @@ static documented_range range_of(int key)
     case SFA_PARAM_ANISOTROPIC:
     case SFA_PARAM_DROP_UNREFERENCED:
     case SFA_PARAM_CROSSING_GUARD: return (documented_range){0, 1, 1, 1};
+    case SFA_PARAM_VOLUME_CORRECTION: return (documented_range){0, 1, 1, 1};
     case SFA_PARAM_RIDGE_ANGLE:
     case SFA_PARAM_CORNER_ANGLE:
     case SFA_PARAM_METRIC_MIN_ANGLE:

@@ -97,7 +97,7 @@ program test_surfadapt
   integer(c_int32_t) :: nverts, ntris, field_id, i
   integer(c_int32_t), pointer :: api_head(:)
   integer(c_int32_t), allocatable :: tri_out(:, :), ranks(:)
-  integer(c_int32_t) :: vranks(nv)
+  integer(c_int32_t) :: vranks(nv), vcomponents(nv), ncomponents
   integer(c_int32_t) :: bad_tri(3, nt), small_tri(3, 1)
   real(c_double) :: value, volume_before, dt, dt_taken, t0, theta, c, sn, lowest, highest
   real(c_double) :: vel(3, nv), before(3, nv), expected(3, nv), small_xyz(3, 1)
@@ -176,6 +176,15 @@ program test_surfadapt
   call check('volume of the unit cube is 1', rc == SFA_OK .and. near(value, 1.0_c_double, 8 * eps))
   rc = sfa_measure(s, SFA_MEASURE_AREA, value)
   call check('area of the unit cube is 6', rc == SFA_OK .and. near(value, 6.0_c_double, 8 * eps))
+
+  rc = sfa_get_component_count(s, ncomponents)
+  call check('the cube is one component', rc == SFA_OK .and. ncomponents == 1)
+  rc = sfa_get_components(s, nv, vcomponents)
+  call check('every vertex is in component 0', rc == SFA_OK .and. all(vcomponents == 0))
+  rc = sfa_measure_component(s, 0, SFA_MEASURE_VOLUME, value)
+  call check('component 0 holds the volume 1', rc == SFA_OK .and. near(value, 1.0_c_double, 8 * eps))
+  rc = sfa_measure_component(s, 1, SFA_MEASURE_VOLUME, value)
+  call check('there is no component 1', rc == SFA_ERR_ARGUMENT)
 
   rc = sfa_get_mesh_alloc(s, xyz_out, tri_out)
   if (rc == SFA_OK) then

@@ -129,6 +129,9 @@ int main(int argc, char **argv)
     MEMBER_SET(get_ridge_edges)
     MEMBER_SET(get_param_bounds)
     MEMBER_SET(version_number)
+    MEMBER_SET(get_component_count)
+    MEMBER_SET(get_components)
+    MEMBER_SET(measure_component)
 #undef MEMBER_SET
     if (!check(all_set, "every member of the table is set")) {
         /* Calling through a NULL member would crash instead of reporting. */

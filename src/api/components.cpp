@@ -1,0 +1,35 @@
+// Components: sfa_get_component_count, sfa_get_components.
+#include "api/boundary.hpp"
+
+#include "mesh/components.hpp"
+
+using namespace sfa;
+
+extern "C" {
+
+SFA_EXPORT int sfa_get_component_count(const sfa_surface *s, int32_t *count)
+{
+    return call(s, "sfa_get_component_count", [&] {
+        require(count != nullptr, "count is NULL");
+        require_mesh(s);
+        *count = connected_components(s->mesh).count;
+    });
+}
+
+SFA_EXPORT int sfa_get_components(const sfa_surface *s, int32_t capacity, int32_t *vertex_component)
+{
+    return call(s, "sfa_get_components", [&] {
+        require(vertex_component != nullptr, "vertex_component is NULL");
+        require_mesh(s);
+        if (capacity < s->mesh.num_vertices()) {
+            char message[120];
+            std::snprintf(message, sizeof message, "capacity too small: the mesh has %d vertices, room was given for %d",
+                          s->mesh.num_vertices(), capacity);
+            fail(Status::argument, message);
+        }
+        const Components components = connected_components(s->mesh);
+        std::copy(components.of_vertex.begin(), components.of_vertex.end(), vertex_component);
+    });
+}
+
+} // extern "C"
