@@ -26,6 +26,16 @@ check "volume unchanged (got $volume_change)" \
   awk -v c="$volume_change" 'BEGIN { exit !(c != "" && c + 0 < 1e-12 && c + 0 > -1e-12) }'
 check "the VTK file has those points" grep -q "^POINTS $vertices double$" "$vtk"
 check "and still the 8 corners' ranks among them" sh -c "grep -q '^SCALARS rank int 1$' '$vtk'"
+check "the summary counts one closed component" grep -q "^  1 component: 1 closed, 0 open$" "$work/out"
+
+# The same cube and, apart from it, one with every triangle turned round: inside-out.
+awk '/^v / { print; printf "v %g %g %g\n", $2 + 3, $3, $4 }' "$work/cube.obj" >"$work/pair.obj"
+awk '/^f / { printf "f %d %d %d\nf %d %d %d\n", 2 * $2 - 1, 2 * $3 - 1, 2 * $4 - 1, 2 * $2, 2 * $4, 2 * $3 }' \
+  "$work/cube.obj" >>"$work/pair.obj"
+check "info on two cubes exits 0" sh -c "'$tool' info '$work/pair.obj' >'$work/info'"
+check "... and counts two closed components" grep -q "^  2 components: 2 closed, 0 open$" "$work/info"
+check "... and warns that the second is inside-out" grep -q "closed component 1 is inside-out" "$work/info"
+check "... and not the first" sh -c "! grep -q 'component 0 is inside-out' '$work/info'"
 check "--isotropic works too" "$tool" remesh "$work/cube.obj" "$work/iso.vtk" --edge-length 0.25 --isotropic
 
 check "a missing input fails" sh -c "! '$tool' remesh '$work/missing.obj' '$work/x.vtk' 2>'$work/err'"
