@@ -29,6 +29,8 @@ bool read_flow_options(int argc, char **argv, int first, FlowRun &run, const cha
             run.isotropic = true;
         else if (!std::strcmp(argv[i], "--no-crossing-guard"))
             run.crossing_guard = false;
+        else if (!std::strcmp(argv[i], "--no-volume-correction"))
+            run.volume_correction = false;
         else if (!std::strcmp(argv[i], "--denoise"))
             run.denoise = fraction_option(argc, argv, i);
         else if (!std::strcmp(argv[i], "--json"))

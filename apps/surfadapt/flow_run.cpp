@@ -39,15 +39,16 @@ int run_flow(const FlowRun &run, FlowResult &result)
         sfa_set_param(s, SFA_PARAM_ANISOTROPIC, 0);
     sfa_set_param(s, SFA_PARAM_DENOISE, run.denoise);
     sfa_set_param(s, SFA_PARAM_CROSSING_GUARD, run.crossing_guard ? 1 : 0);
+    sfa_set_param(s, SFA_PARAM_VOLUME_CORRECTION, run.volume_correction ? 1 : 0);
     // Adapted every few steps: one pass per call, the next call picks up what it leaves.
     sfa_set_param(s, SFA_PARAM_ADAPT_PASSES, 1);
 
     const double volume0 = measure(s, SFA_MEASURE_VOLUME), area0 = measure(s, SFA_MEASURE_AREA);
     std::printf("%s: sphere of radius %g at (%g, %g, %g), %d vertices; T = %g, dt = %g, %d steps; %s adaptation "
-                "every %d steps, denoising %g, crossing guard %s\n\n",
+                "every %d steps, denoising %g, crossing guard %s, volume correction %s\n\n",
                 run.title, run.radius, run.centre[0], run.centre[1], run.centre[2], nverts, run.period, run.dt,
                 run.steps, run.isotropic ? "isotropic" : "anisotropic", run.adapt_every, run.denoise,
-                run.crossing_guard ? "on" : "off");
+                run.crossing_guard ? "on" : "off", run.volume_correction ? "on" : "off");
     std::printf("%5s %6s %9s %10s %13s %10s %9s %9s %9s %9s %8s\n", "step", "t", "vertices", "triangles",
                 "volume err %", "area ratio", "min angle", "max angle", "max turn", "crossings", "seconds");
     TimeSeries series(run.out_dir, "surface");
@@ -99,6 +100,7 @@ int run_flow(const FlowRun &run, FlowResult &result)
             result.smooth_seconds += since(phase);
         }
         result.seconds = since(start);
+        result.max_volume_correction = std::max(result.max_volume_correction, measure(s, SFA_MEASURE_VOLUME_CORRECTION));
 
         const double volume_error = (measure(s, SFA_MEASURE_VOLUME) - volume0) / volume0;
         if (std::abs(volume_error) > std::abs(result.worst_volume_error))
@@ -126,16 +128,20 @@ int run_flow(const FlowRun &run, FlowResult &result)
                 result.max_normal_turn, result.max_self_intersections, result.seconds, result.advect_seconds,
                 result.smooth_seconds, result.adapt_seconds, result.analysis_seconds, result.smoothing_seconds, result.flipping_seconds,
                 result.repair_seconds);
+    std::printf("the operations of one sfa_smooth or sfa_adapt call changed the volume by at most %.2g (relative)%s\n",
+                result.max_volume_correction, run.volume_correction ? "; the volume correction took it back" : "");
     if (run.json)
         std::printf("{\"bench\":\"flow\",\"flow\":\"%s\",\"anisotropic\":%d,\"denoise\":%g,\"crossing_guard\":%d,"
                     "\"vertices_start\":%d,"
                     "\"vertices_max\":%d,\"steps\":%d,\"volume_error\":%.3e,\"worst_volume_error\":%.3e,"
-                    "\"max_area_ratio\":%.3f,\"max_normal_turn\":%.1f,\"max_self_intersections\":%d,\"seconds\":%.2f,\"advect_s\":%.2f,"
+                    "\"max_area_ratio\":%.3f,\"max_normal_turn\":%.1f,\"max_self_intersections\":%d,"
+                    "\"volume_correction\":%d,\"max_volume_correction\":%.3e,\"seconds\":%.2f,\"advect_s\":%.2f,"
                     "\"smooth_s\":%.2f,\"adapt_s\":%.2f,\"analysis_s\":%.2f,\"smoothing_s\":%.2f,"
                     "\"flipping_s\":%.2f,\"split_contract_s\":%.2f,\"adaptation_over_advection\":%.1f}\n",
                     run.title, run.isotropic ? 0 : 1, run.denoise, run.crossing_guard ? 1 : 0, nverts, result.max_vertices, run.steps, result.volume_error,
                     result.worst_volume_error, result.max_area_ratio, result.max_normal_turn,
-                    result.max_self_intersections, result.seconds,
+                    result.max_self_intersections, run.volume_correction ? 1 : 0, result.max_volume_correction,
+                    result.seconds,
                     result.advect_seconds, result.smooth_seconds, result.adapt_seconds, result.analysis_seconds,
                     result.smoothing_seconds, result.flipping_seconds, result.repair_seconds,
                     (result.smooth_seconds + result.adapt_seconds) / result.advect_seconds);

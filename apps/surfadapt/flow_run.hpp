@@ -24,6 +24,7 @@ struct FlowRun {
     bool json = false;    // also print the summary as one JSON line (for benchmarks)
     double denoise = 0;   // SFA_PARAM_DENOISE
     bool crossing_guard = true; // SFA_PARAM_CROSSING_GUARD
+    bool volume_correction = true; // SFA_PARAM_VOLUME_CORRECTION
 };
 
 struct FlowResult {
@@ -33,6 +34,9 @@ struct FlowResult {
     double max_normal_turn = 0;    // degrees, over every step: near 180 at a fold or a cusp
     int max_self_intersections = 0; // at the table's rows: pairs of triangles that cross
     int max_vertices = 0;
+    // The largest SFA_MEASURE_VOLUME_CORRECTION of any sfa_smooth or sfa_adapt call: how far
+    // the operations of one call alone moved the volume.
+    double max_volume_correction = 0;
     double seconds = 0, advect_seconds = 0, smooth_seconds = 0, adapt_seconds = 0; // per call
     // Inside sfa_smooth and sfa_adapt, per phase (SFA_MEASURE_SECONDS_*).
     double analysis_seconds = 0, smoothing_seconds = 0, flipping_seconds = 0, repair_seconds = 0;

@@ -44,6 +44,9 @@ check "enright --denoise 1 (coarse, 60 steps) exits 0" \
 cat "$work/denoised.txt"
 check "enright --denoise 1: volume within 0.5 %, no fold" summary_ok "$work/denoised.txt"
 
+check "--no-volume-correction turns the correction off (and the run says so)" \
+  sh -c "'$tool' enright --resolution 4 --steps 4 --no-volume-correction --json >'$work/nocorr.txt' &&
+         grep -q 'volume correction off' '$work/nocorr.txt' && grep -q '\"volume_correction\":0,' '$work/nocorr.txt'"
 check "--no-crossing-guard turns the guard off (and the run says so)" \
   sh -c "'$tool' enright --resolution 4 --steps 2 --no-crossing-guard | grep -q 'crossing guard off'"
 check "--help after a command prints the usage and exits 0" \
