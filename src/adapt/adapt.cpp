@@ -9,7 +9,6 @@
 #include "fields/carried_fields.hpp"
 #include "geometry/guard_listener.hpp"
 #include "geometry/tracked_analysis.hpp"
-#include "mesh/components.hpp"
 #include "mesh/vertex_labels.hpp"
 
 namespace sfa {
@@ -21,11 +20,11 @@ constexpr double settled_fraction = 1e-2;
 class Adaptation {
 public:
     Adaptation(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
-               SurfaceAnalysis &workspace, PhaseTimes &seconds)
+               SurfaceAnalysis &workspace, const Components &components, PhaseTimes &seconds)
         : mesh_(mesh), settings_(settings), seconds_(seconds), geometry_(workspace), edit_(mesh),
           carried_fields_(fields), features_(detected_features()), tracked_(geometry_, mesh), guard_listener_(guard_),
-          components_(connected_components(mesh)), component_of_(components_.of_vertex),
-          volumes_(component_volumes(mesh, components_.of_vertex, components_.count))
+          closed_(components.closed), component_of_(components.of_vertex),
+          volumes_(component_volumes(mesh, components.of_vertex, components.count))
     {
         edit_.attach(carried_fields_);
         edit_.attach(features_);
@@ -45,6 +44,11 @@ public:
     // Each closed component's enclosed volume back and, if the connectivity changed, the
     // locality order; the vertices the guard watched, numbered as the mesh is now.
     std::vector<char> finish(AdaptCounts &counts);
+    // The components of the mesh as it is now.
+    Components components() const
+    {
+        return {static_cast<int32_t>(closed_.size()), component_of_.labels(), closed_};
+    }
 
 private:
     const CrossingGuard *guard() const { return settings_.crossing_guard ? &guard_ : nullptr; }
@@ -84,7 +88,7 @@ private:
     GuardListener guard_listener_;
     // Each component keeps its own volume: the components as the call found them, followed
     // through every change (a vertex's component never changes: no change of topology).
-    const Components components_;
+    const std::vector<char> closed_;
     VertexLabels component_of_;
     const std::vector<double> volumes_;
 };
@@ -127,7 +131,7 @@ std::vector<char> Adaptation::finish(AdaptCounts &counts)
         // stay with them.
         PhaseClock clock(seconds_.smoothing);
         counts.volume_correction = restore_enclosed_volumes(mesh_, features_.ranks(), component_of_.labels(), volumes_,
-                                                            components_.closed, settings_.volume_correction);
+                                                            closed_, settings_.volume_correction);
     }
     // New vertices and triangles were appended where they were made: put neighbours next
     // to each other in memory again, for every loop until the next adaptation. Only what
@@ -136,7 +140,6 @@ std::vector<char> Adaptation::finish(AdaptCounts &counts)
         PhaseClock clock(seconds_.repair);
         edit_.detach(tracked_);
         edit_.detach(features_);
-        edit_.detach(component_of_);
         edit_.order_for_locality();
     }
     return settings_.crossing_guard ? guard_.watched() : std::vector<char>();
@@ -145,10 +148,10 @@ std::vector<char> Adaptation::finish(AdaptCounts &counts)
 } // namespace
 
 AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
-                          std::vector<char> &near_sheet, SurfaceAnalysis &workspace)
+                          std::vector<char> &near_sheet, SurfaceAnalysis &workspace, Components &components)
 {
     AdaptCounts counts;
-    Adaptation adaptation(mesh, fields, settings, workspace, counts.seconds);
+    Adaptation adaptation(mesh, fields, settings, workspace, components, counts.seconds);
     while (counts.passes < settings.max_passes) {
         // Settled: after the first pass or two, the changes of a pass dwindle to a few edges
         // in a thousand (on a dynamic surface, the second pass of a call changes about 0.5 %
@@ -159,6 +162,7 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
             break;
     }
     near_sheet = adaptation.finish(counts);
+    components = adaptation.components();
     return counts;
 }
 

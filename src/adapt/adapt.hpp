@@ -5,6 +5,7 @@
 #include "adapt/phase_times.hpp"
 #include "adapt/settings.hpp"
 #include "fields/vertex_fields.hpp"
+#include "mesh/components.hpp"
 
 #include <vector>
 
@@ -32,8 +33,10 @@ struct AdaptCounts {
 // vertices near a facing sheet are found at the start and carried through the call; on
 // return `near_sheet` holds them, numbered as the returned mesh (empty without the guard).
 // The analyses are made in `workspace`, whose contents on entry do not matter and on
-// return mean nothing; keeping it from call to call keeps its memory.
+// return mean nothing; keeping it from call to call keeps its memory. `components` are
+// those of the mesh on entry, and on return those of the returned mesh (with the same
+// numbers: the topology does not change).
 AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
-                          std::vector<char> &near_sheet, SurfaceAnalysis &workspace);
+                          std::vector<char> &near_sheet, SurfaceAnalysis &workspace, Components &components);
 
 } // namespace sfa

@@ -3,19 +3,18 @@
 #include "adapt/smooth.hpp"
 #include "adapt/volume.hpp"
 #include "fields/carried_fields.hpp"
-#include "mesh/components.hpp"
 
 #include <algorithm>
 
 namespace sfa {
 
 SmoothResult smooth_surface(TriMesh &mesh, std::vector<VertexField> &fields, const SmoothSettings &settings,
-                            int32_t sweeps, const std::vector<char> &near_sheet, SurfaceAnalysis &workspace)
+                            int32_t sweeps, const std::vector<char> &near_sheet, SurfaceAnalysis &workspace,
+                            const Components &components)
 {
     SmoothResult result;
     PhaseTimes &seconds = result.seconds;
     // Each component keeps its own volume (the connectivity does not change).
-    const Components components = connected_components(mesh);
     const std::vector<double> volumes = component_volumes(mesh, components.of_vertex, components.count);
     CrossingGuard guard;
     if (settings.crossing_guard)

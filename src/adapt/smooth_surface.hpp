@@ -5,6 +5,7 @@
 #include "adapt/phase_times.hpp"
 #include "adapt/settings.hpp"
 #include "fields/vertex_fields.hpp"
+#include "mesh/components.hpp"
 
 #include <vector>
 
@@ -22,8 +23,9 @@ struct SmoothResult {
 // crossing guard, the vertices watched are those of `near_sheet` if it has one mark per
 // vertex (the last adaptation's findings: a flow adapts every few steps, and a sheet thins
 // slowly), else this surface's own. The analyses are made in `workspace` (as for
-// adapt_surface).
+// adapt_surface); `components` are the mesh's.
 SmoothResult smooth_surface(TriMesh &mesh, std::vector<VertexField> &fields, const SmoothSettings &settings,
-                          int32_t sweeps, const std::vector<char> &near_sheet, SurfaceAnalysis &workspace);
+                            int32_t sweeps, const std::vector<char> &near_sheet, SurfaceAnalysis &workspace,
+                            const Components &components);
 
 } // namespace sfa

@@ -27,7 +27,8 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
         std::vector<VertexField> fields = s->fields;
         SmoothResult result;
         try {
-            result = smooth_surface(mesh, fields, settings, iterations, s->near_sheet, s->analysis_workspace);
+            result = smooth_surface(mesh, fields, settings, iterations, s->near_sheet, s->analysis_workspace,
+                                    s->components);
         } catch (...) {
             std::copy(saved_positions.begin(), saved_positions.end(), mesh.pos.begin()); // same size: no allocation
             throw;
@@ -56,7 +57,8 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
             data.push_back(std::move(velocity));
         }
         std::vector<char> near_sheet;
-        const AdaptCounts counts = adapt_surface(mesh, data, settings, near_sheet, s->analysis_workspace);
+        Components components = s->components;
+        const AdaptCounts counts = adapt_surface(mesh, data, settings, near_sheet, s->analysis_workspace, components);
         const std::string broken = invariant_violation(mesh);
         if (!broken.empty())
             fail(Status::internal, ("the adapted mesh is broken (" + broken + "); the surface is unchanged").c_str());
@@ -72,6 +74,7 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
         s->fields.swap(data);
         s->velocity.swap(velocity);
         s->near_sheet.swap(near_sheet);
+        std::swap(s->components, components);
         s->seconds_spent += counts.seconds;
         s->volume_correction = counts.volume_correction;
     });

@@ -2,6 +2,7 @@
 #include "api/boundary.hpp"
 
 #include "geometry/measures.hpp"
+#include "mesh/components.hpp"
 #include "mesh/validate.hpp"
 
 #include <utility>
@@ -23,9 +24,11 @@ SFA_EXPORT int sfa_set_mesh(sfa_surface *s, int32_t nverts, const double *xyz, i
         const bool drop = s->params.get(Param::drop_unreferenced) != 0;
         TriMesh mesh = validated_mesh(MeshInput{nverts, xyz, ntris, tris, index_base, drop});
         const double mean_edge_length = edge_lengths(mesh).mean;
+        Components components = connected_components(mesh);
 
         // Commit: nothing below throws.
         std::swap(s->mesh, mesh);
+        std::swap(s->components, components);
         s->has_mesh = true;
         s->index_base = index_base;
         s->mean_edge_length_at_set = mean_edge_length;

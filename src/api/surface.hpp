@@ -7,6 +7,7 @@
 #include "adapt/phase_times.hpp"
 #include "fields/vertex_fields.hpp"
 #include "geometry/analysis.hpp"
+#include "mesh/components.hpp"
 #include "mesh/tri_mesh.hpp"
 
 #include <cstdint>
@@ -20,6 +21,10 @@ struct sfa_surface {
     sfa::Parameters params;
     std::vector<sfa::Vec3> velocity; // empty until sfa_set_velocities
     std::vector<sfa::VertexField> fields;
+    // The components of the current connectivity, which only sfa_set_mesh and sfa_adapt
+    // change: each closed one keeps its own volume. (Numbered as the last sfa_set_mesh
+    // found them; sfa_get_components numbers them afresh.)
+    sfa::Components components;
     sfa::PhaseTimes seconds_spent; // by the successful sfa_smooth and sfa_adapt calls
     double volume_correction = 0;  // SFA_MEASURE_VOLUME_CORRECTION of the last of them
     // The vertices near a facing sheet (geometry/crossing_guard.hpp) as the last sfa_adapt

@@ -28,9 +28,6 @@ Components connected_components(const TriMesh &mesh)
             });
         }
     }
-    out.of_triangle.resize(mesh.tri.size());
-    for (size_t t = 0; t < mesh.tri.size(); ++t)
-        out.of_triangle[t] = out.of_vertex[mesh.tri[t][0]];
     return out;
 }
 
@@ -44,7 +41,7 @@ TriMesh component_mesh(const TriMesh &mesh, const Components &components, int32_
             part.pos.push_back(mesh.pos[v]);
         }
     for (size_t t = 0; t < mesh.tri.size(); ++t)
-        if (components.of_triangle[t] == c)
+        if (components.of_vertex[mesh.tri[t][0]] == c)
             part.tri.push_back({local[mesh.tri[t][0]], local[mesh.tri[t][1]], local[mesh.tri[t][2]]});
     build_adjacency(part);
     return part;

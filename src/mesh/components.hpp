@@ -10,11 +10,10 @@ namespace sfa {
 
 struct Components {
     int32_t count = 0;
-    // Per vertex, 0 ... count-1, numbered in the order in which each component's first
-    // vertex comes (API.md): deterministic.
+    // Per vertex, 0 ... count-1. connected_components numbers them in the order in which
+    // each component's first vertex comes (API.md); a labelling carried through changes of
+    // the mesh (vertex_labels.hpp) keeps the numbers of the mesh it was made for.
     std::vector<int32_t> of_vertex;
-    // Per triangle: its corners' component.
-    std::vector<int32_t> of_triangle;
     // Per component: whether it has no boundary edge.
     std::vector<char> closed;
 };
