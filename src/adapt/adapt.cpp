@@ -51,7 +51,8 @@ public:
     }
 
 private:
-    const CrossingGuard *guard() const { return settings_.crossing_guard ? &guard_ : nullptr; }
+    // The crossing guard, or null when it is off.
+    CrossingGuard *guard() { return settings_.crossing_guard ? &guard_ : nullptr; }
 
     // Features are detected once, at the start; the geometry is analysed in full where
     // every vertex has moved (at the start and after each sweep). After splitting,
@@ -114,8 +115,7 @@ int32_t Adaptation::pass(AdaptCounts &counts)
         if (sweep > 0)
             analyse_all();
         PhaseClock clock(seconds_.smoothing);
-        std::vector<Vec3> moved =
-            smoothing_sweep(mesh_, geometry_, settings_.denoise, settings_.crossing_guard ? &guard_ : nullptr);
+        std::vector<Vec3> moved = smoothing_sweep(mesh_, geometry_, settings_.denoise, guard());
         edit_.move(moved);
     }
     counts.splits += splits;

@@ -38,16 +38,17 @@ void require_known_quantity(int quantity)
     }
 }
 
-// The quantities that are measures of the mesh itself (not of the calls made on it).
-bool is_mesh_measure(int quantity)
+// The quantities that measure the calls made on the surface, not its mesh: true and the
+// value for those, false for a measure of the mesh.
+bool call_measure(const sfa_surface *s, int quantity, double &value)
 {
     switch (quantity) {
-    case SFA_MEASURE_SECONDS_ANALYSIS:
-    case SFA_MEASURE_SECONDS_SMOOTHING:
-    case SFA_MEASURE_SECONDS_FLIPPING:
-    case SFA_MEASURE_SECONDS_REPAIR:
-    case SFA_MEASURE_VOLUME_CORRECTION: return false;
-    default: return true;
+    case SFA_MEASURE_SECONDS_ANALYSIS: value = s->seconds_spent.analysis; return true;
+    case SFA_MEASURE_SECONDS_SMOOTHING: value = s->seconds_spent.smoothing; return true;
+    case SFA_MEASURE_SECONDS_FLIPPING: value = s->seconds_spent.flipping; return true;
+    case SFA_MEASURE_SECONDS_REPAIR: value = s->seconds_spent.repair; return true;
+    case SFA_MEASURE_VOLUME_CORRECTION: value = s->volume_correction; return true;
+    default: return false;
     }
 }
 
@@ -77,13 +78,8 @@ SFA_EXPORT int sfa_measure(const sfa_surface *s, int quantity, double *value)
     return call(s, "sfa_measure", [&] {
         require(value != nullptr, "value is NULL");
         require_known_quantity(quantity);
-        switch (quantity) {
-        case SFA_MEASURE_SECONDS_ANALYSIS: *value = s->seconds_spent.analysis; return;
-        case SFA_MEASURE_SECONDS_SMOOTHING: *value = s->seconds_spent.smoothing; return;
-        case SFA_MEASURE_SECONDS_FLIPPING: *value = s->seconds_spent.flipping; return;
-        case SFA_MEASURE_SECONDS_REPAIR: *value = s->seconds_spent.repair; return;
-        case SFA_MEASURE_VOLUME_CORRECTION: *value = s->volume_correction; return;
-        }
+        if (call_measure(s, quantity, *value))
+            return;
         require_mesh(s);
         *value = mesh_measure(s->mesh, quantity);
     });
@@ -94,7 +90,8 @@ SFA_EXPORT int sfa_measure_component(const sfa_surface *s, int32_t component, in
     return call(s, "sfa_measure_component", [&] {
         require(value != nullptr, "value is NULL");
         require_known_quantity(quantity);
-        if (!is_mesh_measure(quantity)) {
+        double unused = 0;
+        if (call_measure(s, quantity, unused)) {
             char message[160];
             std::snprintf(message, sizeof message,
                           "quantity %d measures the calls made on the surface, not one of its components: ask "

@@ -12,7 +12,7 @@ SFA_EXPORT int sfa_get_component_count(const sfa_surface *s, int32_t *count)
     return call(s, "sfa_get_component_count", [&] {
         require(count != nullptr, "count is NULL");
         require_mesh(s);
-        *count = connected_components(s->mesh).count;
+        *count = s->components.count; // the handle's own: kept for every change of connectivity
     });
 }
 
