@@ -67,8 +67,10 @@ FORTRAN_TEST     := build/tests/test_fortran
 FORTRAN_EXAMPLE  := build/examples/vortex_host
 PLUGIN_TEST      := build/tests/test_plugin
 # C benchmarks use the public API; C++ ones (bench/*.cpp) time internal steps.
+# bench/fidelity is a tool for the flows' checkpoints (bench_flows.sh runs it), not a case.
+FIDELITY         := build/bench/fidelity
 BENCHES          := $(patsubst bench/%.c,build/bench/%,$(sort $(wildcard bench/*.c))) \
-                    $(patsubst bench/%.cpp,build/bench/%,$(sort $(wildcard bench/*.cpp)))
+                    $(filter-out $(FIDELITY),$(patsubst bench/%.cpp,build/bench/%,$(sort $(wildcard bench/*.cpp))))
 
 TEST_RPATH := -Wl,-rpath,'$$ORIGIN/../../lib'
 
@@ -179,10 +181,11 @@ $(PLUGIN_TEST): tests/plugin/test_dlopen.c | deps
 test: deps-check $(UNIT_TESTS) $(C_TESTS)
 	@OMP_WAIT_POLICY=$${OMP_WAIT_POLICY:-passive} scripts/run-tests.sh $(UNIT_TESTS) $(C_TESTS)
 
-check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE) $(PLUGIN_TEST) $(SAN_TESTS)
+check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE) $(PLUGIN_TEST) $(FIDELITY) $(SAN_TESTS)
 	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) "$(FORTRAN_EXAMPLE) 60" \
 	  "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" \
-	  tests/install/test_install.sh tests/cli/test_features_cli.sh tests/cli/test_remesh_cli.sh tests/cli/test_flows_cli.sh $(SAN_TESTS)
+	  tests/install/test_install.sh tests/cli/test_features_cli.sh tests/cli/test_remesh_cli.sh tests/cli/test_flows_cli.sh \
+	  tests/cli/test_fidelity.sh $(SAN_TESTS)
 
 # ------------------------------------------------------------------ ABI
 # abidiff exit status is a bit set: 4 = the ABI changed (additions), 8 = an incompatible
@@ -203,7 +206,12 @@ build/bench/%: bench/%.c $(TEST_SUPPORT_OBJ) $(LIB_SO) $(LIB_DEV)
 build/bench/%: bench/%.cpp $(TEST_SUPPORT_OBJ) $(LIB_A)
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -Ibench -Iapps/surfadapt -o $@ $< $(TEST_SUPPORT_OBJ) $(LIB_A) -lm
-bench: all $(BENCHES)
+# The backtrace needs the flows' velocity fields and the checkpoint header of the tool.
+$(FIDELITY): bench/fidelity.cpp build/apps/surfadapt/flows.o build/apps/surfadapt/checkpoint.o \
+             build/apps/surfadapt/obj_io.o $(LIB_A)
+	@mkdir -p $(@D)
+	$(CXX) $(CXXFLAGS) -Iapps/surfadapt -o $@ $^ -lm
+bench: all $(BENCHES) $(FIDELITY)
 	@for b in $(BENCHES); do $$b || exit 1; done
 	@bench/bench_flows.sh
 

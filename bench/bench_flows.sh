@@ -5,20 +5,30 @@
 # vertex counts, volume errors, the largest normal turn and crossings, and the ratio of
 # smoothing + adaptation time to bare advection time in the same run. The shorter runs are
 # repeated (RUNS, default 3) and a last line per experiment gives the median time. Enright
-# runs also without the crossing guard, to show what the guard costs.
+# runs also without the crossing guard, to show what the guard costs. The shape error of
+# each experiment comes from its checkpoints (bench/fidelity.cpp says how it is measured).
 set -eu
 cd "$(dirname "$0")/.."
 tool=${SURFADAPT:-bin/surfadapt}
 runs=${RUNS:-3}
+fidelity=${FIDELITY:-build/bench/fidelity}
+checkpoints=${CHECKPOINTS:-build/bench/checkpoints}
 
-# flow NAME RUNS ARGS...: the runs' JSON lines, then their median time.
+# flow NAME RUNS ARGS...: the runs' JSON lines, then their median time; the first run saves
+# its checkpoints (t = 0, T/4, T/2, 3T/4, T) and bench/fidelity measures the shape error at
+# each by backtracing (one JSON line per checkpoint, tagged with the experiment's name).
 flow() {
     name=$1 count=$2
     shift 2
     times=""
     i=0
     while [ "$i" -lt "$count" ]; do
-        line=$("$tool" "$@" --json --report-every 100000 | grep '^{')
+        if [ "$i" -eq 0 ]; then
+            rm -rf "$checkpoints/$name"
+            line=$("$tool" "$@" --json --report-every 100000 --checkpoints "$checkpoints/$name" | grep '^{')
+        else
+            line=$("$tool" "$@" --json --report-every 100000 | grep '^{')
+        fi
         echo "$line"
         times="$times $(echo "$line" | sed 's/.*"seconds":\([0-9.]*\).*/\1/')"
         i=$((i + 1))
@@ -27,6 +37,9 @@ flow() {
         awk -v name="$name" -v n="$count" '{ t[NR] = $1 } END {
             m = (NR % 2) ? t[(NR + 1) / 2] : (t[NR / 2] + t[NR / 2 + 1]) / 2
             printf "{\"bench\":\"flow_median\",\"experiment\":\"%s\",\"runs\":%d,\"median_seconds\":%.2f}\n", name, n, m }'
+    for mesh in $(ls "$checkpoints/$name"/t*.obj | sed 's/.*\/t\(.*\)[.]obj$/\1/' | sort -g); do
+        "$fidelity" "$checkpoints/$name/t$mesh.obj" --json | grep '^{' | sed "s/^{/{\"experiment\":\"$name\",/"
+    done
 }
 
 flow enright "$runs" enright
@@ -34,3 +47,4 @@ flow enright_no_crossing_guard "$runs" enright --no-crossing-guard
 flow vortex_t2 "$runs" vortex --period 2
 flow vortex_t2_isotropic "$runs" vortex --period 2 --isotropic
 flow vortex_t6 1 vortex --period 6
+flow vortex_t6_isotropic 1 vortex --period 6 --isotropic

@@ -29,6 +29,8 @@ bool read_flow_options(int argc, char **argv, int first, FlowRun &run, const cha
             run.isotropic = true;
         else if (!std::strcmp(argv[i], "--no-crossing-guard"))
             run.crossing_guard = false;
+        else if (!std::strcmp(argv[i], "--no-smoothing"))
+            run.smoothing = false;
         else if (!std::strcmp(argv[i], "--no-volume-correction"))
             run.volume_correction = false;
         else if (!std::strcmp(argv[i], "--denoise"))
@@ -37,6 +39,8 @@ bool read_flow_options(int argc, char **argv, int first, FlowRun &run, const cha
             run.json = true;
         else if (!std::strcmp(argv[i], "--out") && i + 1 < argc)
             run.out_dir = argv[++i];
+        else if (!std::strcmp(argv[i], "--checkpoints") && i + 1 < argc)
+            run.checkpoint_dir = argv[++i];
         else if (!std::strcmp(argv[i], "--period") && !std::strcmp(command, "vortex"))
             ++i; // read by the caller
         else {
@@ -61,7 +65,7 @@ FlowRun enright_setup()
 {
     // §5.2.2: radius 0.15 at (0.35, 0.35, 0.35), T = 3, dt = 0.015 (200 steps), adaptation
     // every 4 steps; 23,042 vertices (the paper's mesh had 23,238).
-    return FlowRun{"Enright flow", enright_velocity, 3.0, 0.015, 200, {0.35, 0.35, 0.35}, 0.15, 48, 4, false, "", 20};
+    return FlowRun{"Enright flow", "enright", enright_velocity, 3.0, 0.015, 200, {0.35, 0.35, 0.35}, 0.15, 48, 4, false, "", "", 20};
 }
 
 int enright_command(int argc, char **argv)
@@ -86,6 +90,7 @@ int vortex_command(int argc, char **argv)
             }
         }
     FlowRun run{period == 2 ? "Vortex flow, T = 2" : "Vortex flow, T = 6",
+                "vortex",
                 vortex_velocity,
                 double(period),
                 period == 2 ? 0.01 : 0.015,
@@ -95,6 +100,7 @@ int vortex_command(int argc, char **argv)
                 period == 2 ? 33 : 48,
                 4,
                 false,
+                "",
                 "",
                 20};
     if (!read_flow_options(argc, argv, 2, run, "vortex"))

@@ -1,5 +1,6 @@
 #include "flow_run.hpp"
 
+#include "checkpoint.hpp"
 #include "cli.hpp"
 #include "flows.hpp"
 #include "icosphere.h"
@@ -65,7 +66,20 @@ int run_flow(const FlowRun &run, FlowResult &result)
         std::fflush(stdout);
         return run.out_dir.empty() || series.save(s, t, error);
     };
-    if (!report(0, 0)) {
+    // At t = 0 and every quarter period, when the steps divide into quarters.
+    const auto save = [&](int step, double t) {
+        if (run.checkpoint_dir.empty() || (4 * step) % std::max(run.steps, 1) != 0)
+            return true;
+        if (!ensure_directory(run.checkpoint_dir)) {
+            error = "cannot create " + run.checkpoint_dir;
+            return false;
+        }
+        char name[64];
+        std::snprintf(name, sizeof name, "/t%g.obj", t);
+        const Checkpoint info{run.flow, run.period, t, {run.centre[0], run.centre[1], run.centre[2]}, run.radius};
+        return save_checkpoint(s, info, run.checkpoint_dir + name, error);
+    };
+    if (!report(0, 0) || !save(0, 0)) {
         std::fprintf(stderr, "surfadapt: %s\n", error.c_str());
         sfa_destroy(s);
         return 1;
@@ -94,7 +108,7 @@ int run_flow(const FlowRun &run, FlowResult &result)
             if (sfa_adapt(s) != SFA_OK)
                 return fail(s, "sfa_adapt");
             result.adapt_seconds += since(phase);
-        } else {
+        } else if (run.smoothing) {
             if (sfa_smooth(s, 1) != SFA_OK)
                 return fail(s, "sfa_smooth");
             result.smooth_seconds += since(phase);
@@ -111,7 +125,7 @@ int run_flow(const FlowRun &run, FlowResult &result)
         int32_t v = 0, tcount = 0;
         sfa_get_counts(s, &v, &tcount);
         result.max_vertices = std::max(result.max_vertices, static_cast<int>(v));
-        if ((step % run.report_every == 0 || step == run.steps) && !report(step, t)) {
+        if (((step % run.report_every == 0 || step == run.steps) && !report(step, t)) || !save(step, t)) {
             std::fprintf(stderr, "surfadapt: %s\n", error.c_str());
             sfa_destroy(s);
             return 1;
@@ -147,6 +161,8 @@ int run_flow(const FlowRun &run, FlowResult &result)
                     (result.smooth_seconds + result.adapt_seconds) / result.advect_seconds);
     if (!run.out_dir.empty())
         std::printf("time series: %s/surface.pvd\n", run.out_dir.c_str());
+    if (!run.checkpoint_dir.empty())
+        std::printf("checkpoints: %s/t*.obj\n", run.checkpoint_dir.c_str());
     sfa_destroy(s);
     return 0;
 }

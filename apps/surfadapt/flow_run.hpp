@@ -10,6 +10,7 @@
 
 struct FlowRun {
     const char *title;
+    const char *flow;     // "enright" or "vortex": the velocity's name in checkpoints
     sfa_velocity_fn velocity;
     double period;
     double dt;
@@ -20,11 +21,15 @@ struct FlowRun {
     int adapt_every;      // 0: never adapt
     bool isotropic;
     std::string out_dir;  // empty: no files
+    // Empty: none. Otherwise the mesh at t = 0, T/4, T/2, 3T/4 and T (checkpoint.hpp), as
+    // DIR/t<time>.obj, for bench/fidelity.
+    std::string checkpoint_dir;
     int report_every;     // table rows (and saved steps)
     bool json = false;    // also print the summary as one JSON line (for benchmarks)
     double denoise = 0;   // SFA_PARAM_DENOISE
     bool crossing_guard = true; // SFA_PARAM_CROSSING_GUARD
     bool volume_correction = true; // SFA_PARAM_VOLUME_CORRECTION
+    bool smoothing = true;  // false: a step that is not adapted is not smoothed either
 };
 
 struct FlowResult {

@@ -312,6 +312,27 @@ int mesh_read(const char *path, sfa_mesh_data *out, char *err, size_t err_len)
     return 0;
 }
 
+int mesh_write_obj(const char *path, const sfa_mesh_data *m, const char *comment, char *err, size_t err_len)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno));
+        return -1;
+    }
+    if (comment)
+        fprintf(f, "# %s\n", comment);
+    for (int32_t i = 0; i < m->nverts; ++i)
+        fprintf(f, "v %.17g %.17g %.17g\n", m->xyz[3 * i], m->xyz[3 * i + 1], m->xyz[3 * i + 2]);
+    for (int32_t i = 0; i < m->ntris; ++i)
+        fprintf(f, "f %d %d %d\n", m->tris[3 * i] + 1, m->tris[3 * i + 1] + 1, m->tris[3 * i + 2] + 1);
+    const int failed = ferror(f);
+    if (fclose(f) != 0 || failed) {
+        snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
 void mesh_free(sfa_mesh_data *m)
 {
     if (!m)

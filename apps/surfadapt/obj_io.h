@@ -25,6 +25,11 @@ typedef struct sfa_mesh_data {
  * Returns 0, or -1 with `*out` zeroed and a message in `err` (file and line). */
 int mesh_read(const char *path, sfa_mesh_data *out, char *err, size_t err_len);
 
+/* Writes `m` to `path` as OBJ: a `# comment` first line if `comment` is not NULL, `v` lines with every coordinate to full double precision
+ * (%.17g: read back bit for bit), then 1-based `f` lines. Returns 0, or -1 with a message
+ * in `err` (file and the system's reason). */
+int mesh_write_obj(const char *path, const sfa_mesh_data *m, const char *comment, char *err, size_t err_len);
+
 /* Frees the arrays of `m` and zeroes it; NULL and zeroed meshes are fine. */
 void mesh_free(sfa_mesh_data *m);
 

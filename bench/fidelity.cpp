@@ -1,0 +1,233 @@
+// fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--json]
+//
+// The shape error of a tracked surface, measured by backtracing (issue "many bubbles",
+// item 3). The paper's flows are time-reversible: every point of the exact surface at time
+// t, carried backward by the same velocity field to t = 0, lands on the start sphere. So
+// each sample of the tracked mesh at time t is integrated back to t = 0 with RK4, and its
+// error is d = | |p0 - c| - r | / r. The samples are the vertices, the edge midpoints and
+// four points inside every triangle (its centroid and the three points (2/3, 1/6, 1/6)),
+// so a mesh that keeps its vertices on the surface but lets its triangles cut across it is
+// seen. Reported: the largest d of any sample, the area-weighted RMS and 99th percentile
+// over the triangles' points (each stands for a quarter of its triangle's area), the
+// largest d over the vertices alone, and the area-weighted mean of the signed error
+// (|p0 - c| - r) / r, which shows a bias such as a global offset of the surface.
+//
+// The mesh is a flow run's checkpoint (surfadapt enright|vortex --checkpoints DIR), whose
+// first line names the flow, its period, the time and the start sphere. The RK4 step is
+// T / N (N = 1000 by default: halving it changes the figures by about 1e-8); --check-step integrates again at half the step and prints
+// how much that changes each figure, which must be nothing that matters.
+#include "checkpoint.hpp"
+#include "flows.hpp"
+#include "obj_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Samples {
+    std::vector<double> xyz;    // 3 per sample
+    std::vector<double> weight; // area each stands for; 0 for vertices and edge midpoints
+    int32_t vertices = 0;       // the first samples are the vertices
+};
+
+Samples sample_mesh(const sfa_mesh_data &mesh)
+{
+    Samples samples;
+    samples.vertices = mesh.nverts;
+    samples.xyz.assign(mesh.xyz, mesh.xyz + 3 * static_cast<size_t>(mesh.nverts));
+    samples.weight.assign(mesh.nverts, 0.0);
+    const auto add = [&](const double *a, const double *b, const double *c, double wa, double wb, double wc,
+                         double weight) {
+        for (int k = 0; k < 3; ++k)
+            samples.xyz.push_back(wa * a[k] + wb * b[k] + wc * c[k]);
+        samples.weight.push_back(weight);
+    };
+    std::vector<uint64_t> edges;
+    for (int32_t t = 0; t < mesh.ntris; ++t) {
+        const int32_t *v = mesh.tris + 3 * t;
+        const double *a = mesh.xyz + 3 * v[0], *b = mesh.xyz + 3 * v[1], *c = mesh.xyz + 3 * v[2];
+        double u[3], w[3];
+        for (int k = 0; k < 3; ++k) {
+            u[k] = b[k] - a[k];
+            w[k] = c[k] - a[k];
+        }
+        const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+        const double quarter = 0.125 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        add(a, b, c, 1.0 / 3, 1.0 / 3, 1.0 / 3, quarter);
+        add(a, b, c, 2.0 / 3, 1.0 / 6, 1.0 / 6, quarter);
+        add(a, b, c, 1.0 / 6, 2.0 / 3, 1.0 / 6, quarter);
+        add(a, b, c, 1.0 / 6, 1.0 / 6, 2.0 / 3, quarter);
+        for (int k = 0; k < 3; ++k) {
+            const uint64_t i = static_cast<uint32_t>(v[k]), j = static_cast<uint32_t>(v[(k + 1) % 3]);
+            edges.push_back(std::min(i, j) << 32 | std::max(i, j));
+        }
+    }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    for (uint64_t e : edges) {
+        const double *a = mesh.xyz + 3 * (e >> 32), *b = mesh.xyz + 3 * (e & 0xffffffffu);
+        add(a, b, a, 0.5, 0.5, 0.0, 0.0);
+    }
+    return samples;
+}
+
+// Carries every point from time t back to 0 by RK4 with `steps` equal steps.
+void backtrace(sfa_velocity_fn velocity, double period, double t, int steps, std::vector<double> &xyz)
+{
+    FlowPeriod flow{period};
+    const int32_t n = static_cast<int32_t>(xyz.size() / 3);
+    const double h = -t / steps;
+    std::vector<double> k1(xyz.size()), k2(xyz.size()), k3(xyz.size()), k4(xyz.size()), stage(xyz.size());
+    const auto offset = [&](const std::vector<double> &k, double scale) {
+#pragma omp parallel for schedule(static)
+        for (size_t i = 0; i < xyz.size(); ++i)
+            stage[i] = xyz[i] + scale * k[i];
+    };
+    for (int step = 0; step < steps; ++step) {
+        const double time = t + step * h;
+        velocity(&flow, n, xyz.data(), time, k1.data());
+        offset(k1, h / 2);
+        velocity(&flow, n, stage.data(), time + h / 2, k2.data());
+        offset(k2, h / 2);
+        velocity(&flow, n, stage.data(), time + h / 2, k3.data());
+        offset(k3, h);
+        velocity(&flow, n, stage.data(), time + h, k4.data());
+#pragma omp parallel for schedule(static)
+        for (size_t i = 0; i < xyz.size(); ++i)
+            xyz[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+    }
+}
+
+struct Figures {
+    double max = 0, rms = 0, p99 = 0, vertex_max = 0, bias = 0;
+    size_t worst = 0; // the sample of the largest error
+};
+
+Figures figures_of(const Samples &samples, const std::vector<double> &start, const Checkpoint &info)
+{
+    const size_t n = samples.weight.size();
+    std::vector<double> signed_error(n);
+    for (size_t i = 0; i < n; ++i) {
+        const double dx = start[3 * i] - info.centre[0], dy = start[3 * i + 1] - info.centre[1],
+                     dz = start[3 * i + 2] - info.centre[2];
+        signed_error[i] = (std::sqrt(dx * dx + dy * dy + dz * dz) - info.radius) / info.radius;
+    }
+    Figures f;
+    double area = 0, square = 0, sum = 0;
+    std::vector<std::pair<double, double>> weighted; // (d, weight) of the triangles' points
+    for (size_t i = 0; i < n; ++i) {
+        const double d = std::abs(signed_error[i]);
+        if (d > f.max) {
+            f.max = d;
+            f.worst = i;
+        }
+        if (i < static_cast<size_t>(samples.vertices))
+            f.vertex_max = std::max(f.vertex_max, d);
+        if (samples.weight[i] > 0) {
+            area += samples.weight[i];
+            square += samples.weight[i] * d * d;
+            sum += samples.weight[i] * signed_error[i];
+            weighted.emplace_back(d, samples.weight[i]);
+        }
+    }
+    f.rms = std::sqrt(square / area);
+    f.bias = sum / area;
+    std::sort(weighted.begin(), weighted.end());
+    double below = 0;
+    for (const auto &[d, w] : weighted) {
+        below += w;
+        f.p99 = d;
+        if (below >= 0.99 * area)
+            break;
+    }
+    return f;
+}
+
+int usage()
+{
+    std::fprintf(stderr, "usage: fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--json]\n");
+    return 2;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    if (argc < 2)
+        return usage();
+    const char *path = argv[1];
+    int steps_per_period = 1000;
+    bool check_step = false, json = false;
+    for (int i = 2; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--steps-per-period") && i + 1 < argc)
+            steps_per_period = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--check-step"))
+            check_step = true;
+        else if (!std::strcmp(argv[i], "--json"))
+            json = true;
+        else
+            return usage();
+    }
+    if (steps_per_period < 1)
+        return usage();
+    Checkpoint info;
+    std::string error;
+    if (!read_checkpoint_header(path, info, error)) {
+        std::fprintf(stderr, "fidelity: %s\n", error.c_str());
+        return 1;
+    }
+    const sfa_velocity_fn velocity = info.flow == "enright" ? enright_velocity
+                                     : info.flow == "vortex" ? vortex_velocity
+                                                             : nullptr;
+    if (!velocity || info.period <= 0 || info.radius <= 0 || info.time < 0) {
+        std::fprintf(stderr, "fidelity: %s: unknown flow '%s' or bad period, time or radius\n", path,
+                     info.flow.c_str());
+        return 1;
+    }
+    sfa_mesh_data mesh{};
+    char message[512];
+    if (mesh_read(path, &mesh, message, sizeof message) != 0) {
+        std::fprintf(stderr, "fidelity: %s\n", message);
+        return 1;
+    }
+    const Samples samples = sample_mesh(mesh);
+    const int32_t nverts = mesh.nverts;
+    mesh_free(&mesh);
+
+    const int steps = std::max(1, static_cast<int>(std::ceil(info.time / info.period * steps_per_period)));
+    std::vector<double> start = samples.xyz;
+    backtrace(velocity, info.period, info.time, steps, start);
+    const Figures f = figures_of(samples, start, info);
+    const double *worst = samples.xyz.data() + 3 * f.worst;
+    std::printf("%s: %s, T = %g, t = %g, %d vertices, %zu samples, %d RK4 steps back: d max %.2e, RMS %.2e, "
+                "99th percentile %.2e, vertices' max %.2e, bias %+.2e; worst at (%.4f, %.4f, %.4f)%s\n",
+                path, info.flow.c_str(), info.period, info.time, nverts, samples.weight.size(), steps, f.max, f.rms,
+                f.p99, f.vertex_max, f.bias, worst[0], worst[1], worst[2],
+                f.worst < static_cast<size_t>(samples.vertices) ? ", a vertex" : "");
+    double step_change = 0;
+    if (check_step) {
+        std::vector<double> finer = samples.xyz;
+        backtrace(velocity, info.period, info.time, 2 * steps, finer);
+        const Figures g = figures_of(samples, finer, info);
+        step_change = std::max({std::abs(g.max - f.max), std::abs(g.rms - f.rms), std::abs(g.p99 - f.p99),
+                                std::abs(g.vertex_max - f.vertex_max), std::abs(g.bias - f.bias)});
+        std::printf("  halving the step changes the figures by at most %.1e\n", step_change);
+    }
+    char step_figure[48] = "";
+    if (check_step)
+        std::snprintf(step_figure, sizeof step_figure, ",\"step_change\":%.1e", step_change);
+    if (json)
+        std::printf("{\"bench\":\"fidelity\",\"flow\":\"%s\",\"period\":%g,\"time\":%g,\"vertices\":%d,"
+                    "\"samples\":%zu,\"rk4_steps\":%d,\"max\":%.3e,\"rms\":%.3e,\"p99\":%.3e,\"vertex_max\":%.3e,"
+                    "\"bias\":%.3e%s}\n",
+                    info.flow.c_str(), info.period, info.time, nverts, samples.weight.size(), steps, f.max, f.rms,
+                    f.p99, f.vertex_max, f.bias, step_figure);
+    return 0;
+}

@@ -1,0 +1,50 @@
+#!/bin/sh
+# The backtrace measure of shape error (bench/fidelity) on a coarse Enright run: the flow
+# saves its checkpoints, the tool finds the start sphere's own error at t = 0, the tracked
+# surface's at t = T within a few times that, and a surface that is never remeshed out of
+# reach however well its vertices follow the flow. Needs the tool and build/bench/fidelity
+# built (`make check` builds both).
+# Ends with "cli: N passed, M failed" and a non-zero status if anything failed.
+set -u
+cd "$(dirname "$0")/../.." || exit 1
+
+. tests/cli/cli_testing.sh
+fidelity=${FIDELITY:-build/bench/fidelity}
+
+# figure FILE KEY: the number after "KEY": in the JSON line of FILE.
+figure() { sed -n "s/.*\"$2\":\([-0-9.e+]*\).*/\1/p" "$1"; }
+# below A B [FACTOR]: A < FACTOR * B (FACTOR 1 if not given).
+below() { awk -v a="$1" -v b="$2" -v f="${3:-1}" 'BEGIN { exit !(a < f * b) }'; }
+
+check "enright (2,562 vertices, a whole period) saves its checkpoints at 0, T/4, T/2, 3T/4 and T" \
+  sh -c "'$tool' enright --resolution 16 --report-every 1000 --checkpoints '$work/tracked' >/dev/null &&
+         for t in 0 0.75 1.5 2.25 3; do head -1 '$work/tracked/t'\$t.obj | grep -q \"time \$t \" || exit 1; done"
+"$fidelity" "$work/tracked/t0.obj" --json >"$work/start.txt"
+"$fidelity" "$work/tracked/t3.obj" --json --check-step >"$work/end.txt"
+cat "$work/start.txt" "$work/end.txt"
+start_is_floor() {
+  below "$(figure "$work/start.txt" vertex_max)" 1e-12 && below "$(figure "$work/start.txt" bias)" 0 &&
+    below 1e-4 "$(figure "$work/start.txt" rms)"
+}
+check "at t = 0 the vertices lie on the sphere and the triangles inside it (the floor)" start_is_floor
+check "halving the RK4 step changes no figure by 1e-6" below "$(figure "$work/end.txt" step_change)" 1e-6
+check "at t = T the RMS error is within 2.5 times the start mesh's" \
+  below "$(figure "$work/end.txt" rms)" "$(figure "$work/start.txt" rms)" 2.5
+check "at t = T the largest error is within 25 times the start mesh's" \
+  below "$(figure "$work/end.txt" max)" "$(figure "$work/start.txt" max)" 25
+
+check "the same run never remeshed (advection only) exits 0" \
+  sh -c "'$tool' enright --resolution 16 --steps 50 --adapt-every 0 --no-smoothing --report-every 1000 \
+           --checkpoints '$work/advected' >/dev/null"
+"$fidelity" "$work/tracked/t0.75.obj" --json >"$work/tracked.txt"
+"$fidelity" "$work/advected/t0.75.obj" --json >"$work/advected.txt"
+cat "$work/tracked.txt" "$work/advected.txt"
+check "without remeshing the vertices follow the flow (error below 1e-4)" \
+  below "$(figure "$work/advected.txt" vertex_max)" 1e-4
+check "but the stretched triangles between them leave the surface: RMS 10 times the tracked one's" \
+  below "$(figure "$work/tracked.txt" rms)" "$(figure "$work/advected.txt" rms)" 0.1
+
+check "a mesh that is not a checkpoint is refused with the reason" \
+  sh -c "printf 'v 0 0 0\n' >'$work/plain.obj'; '$fidelity' '$work/plain.obj' 2>&1 | grep -q 'not a surfadapt checkpoint'"
+
+finish
