@@ -1,4 +1,4 @@
-// fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--json]
+// fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--worst K] [--json]
 //
 // The shape error of a tracked surface, measured by backtracing (issue "many bubbles",
 // item 3). The paper's flows are time-reversible: every point of the exact surface at time
@@ -9,13 +9,15 @@
 // so a mesh that keeps its vertices on the surface but lets its triangles cut across it is
 // seen. Reported: the largest d of any sample, the area-weighted RMS and 99th percentile
 // over the triangles' points (each stands for a quarter of its triangle's area), the
-// largest d over the vertices alone, and the area-weighted mean of the signed error
-// (|p0 - c| - r) / r, which shows a bias such as a global offset of the surface.
+// largest d and the RMS over the vertices alone, and the area-weighted mean of the signed error
+// (|p0 - c| - r) / r, which shows a bias such as a global offset of the surface; and the
+// mesh's smallest and largest angle.
 //
 // The mesh is a flow run's checkpoint (surfadapt enright|vortex --checkpoints DIR), whose
 // first line names the flow, its period, the time and the start sphere. The RK4 step is
 // T / N (N = 1000 by default: halving it changes the figures by about 1e-8); --check-step integrates again at half the step and prints
-// how much that changes each figure, which must be nothing that matters.
+// how much that changes each figure, which must be nothing that matters. --worst K lists
+// the K samples of the largest error (a vertex with its number in the file).
 #include "checkpoint.hpp"
 #include "flows.hpp"
 #include "obj_io.h"
@@ -78,6 +80,28 @@ Samples sample_mesh(const sfa_mesh_data &mesh)
     return samples;
 }
 
+// The smallest and largest angle of any triangle, in degrees.
+std::pair<double, double> angle_range(const sfa_mesh_data &mesh)
+{
+    double smallest = 180, largest = 0;
+    for (int32_t t = 0; t < mesh.ntris; ++t)
+        for (int k = 0; k < 3; ++k) {
+            const double *a = mesh.xyz + 3 * mesh.tris[3 * t + k], *b = mesh.xyz + 3 * mesh.tris[3 * t + (k + 1) % 3],
+                         *c = mesh.xyz + 3 * mesh.tris[3 * t + (k + 2) % 3];
+            double u[3], w[3];
+            for (int i = 0; i < 3; ++i) {
+                u[i] = b[i] - a[i];
+                w[i] = c[i] - a[i];
+            }
+            const double cross[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+            const double angle = std::atan2(std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]),
+                                            u[0] * w[0] + u[1] * w[1] + u[2] * w[2]) * 180 / 3.14159265358979323846;
+            smallest = std::min(smallest, angle);
+            largest = std::max(largest, angle);
+        }
+    return {smallest, largest};
+}
+
 // Carries every point from time t back to 0 by RK4 with `steps` equal steps.
 void backtrace(sfa_velocity_fn velocity, double period, double t, int steps, std::vector<double> &xyz)
 {
@@ -106,7 +130,7 @@ void backtrace(sfa_velocity_fn velocity, double period, double t, int steps, std
 }
 
 struct Figures {
-    double max = 0, rms = 0, p99 = 0, vertex_max = 0, bias = 0;
+    double max = 0, rms = 0, p99 = 0, vertex_max = 0, vertex_rms = 0, bias = 0;
     size_t worst = 0; // the sample of the largest error
 };
 
@@ -128,8 +152,10 @@ Figures figures_of(const Samples &samples, const std::vector<double> &start, con
             f.max = d;
             f.worst = i;
         }
-        if (i < static_cast<size_t>(samples.vertices))
+        if (i < static_cast<size_t>(samples.vertices)) {
             f.vertex_max = std::max(f.vertex_max, d);
+            f.vertex_rms += d * d;
+        }
         if (samples.weight[i] > 0) {
             area += samples.weight[i];
             square += samples.weight[i] * d * d;
@@ -138,6 +164,7 @@ Figures figures_of(const Samples &samples, const std::vector<double> &start, con
         }
     }
     f.rms = std::sqrt(square / area);
+    f.vertex_rms = std::sqrt(f.vertex_rms / samples.vertices);
     f.bias = sum / area;
     std::sort(weighted.begin(), weighted.end());
     double below = 0;
@@ -150,9 +177,31 @@ Figures figures_of(const Samples &samples, const std::vector<double> &start, con
     return f;
 }
 
+// The `count` samples of the largest error: where the error comes from.
+void print_worst(const Samples &samples, const std::vector<double> &start, const Checkpoint &info, int count)
+{
+    std::vector<std::pair<double, size_t>> errors;
+    for (size_t i = 0; i < samples.weight.size(); ++i) {
+        const double dx = start[3 * i] - info.centre[0], dy = start[3 * i + 1] - info.centre[1],
+                     dz = start[3 * i + 2] - info.centre[2];
+        errors.emplace_back((std::sqrt(dx * dx + dy * dy + dz * dz) - info.radius) / info.radius, i);
+    }
+    const size_t shown = std::min(errors.size(), static_cast<size_t>(count));
+    std::partial_sort(errors.begin(), errors.begin() + shown, errors.end(),
+                      [](const auto &p, const auto &q) { return std::abs(p.first) > std::abs(q.first); });
+    for (size_t k = 0; k < shown; ++k) {
+        const size_t i = errors[k].second;
+        const bool vertex = i < static_cast<size_t>(samples.vertices);
+        std::printf("  %+.2e at (%.5f, %.5f, %.5f)%s", errors[k].first, samples.xyz[3 * i], samples.xyz[3 * i + 1],
+                    samples.xyz[3 * i + 2], vertex ? ", vertex " : "\n");
+        if (vertex)
+            std::printf("%zu (OBJ %zu)\n", i, i + 1);
+    }
+}
+
 int usage()
 {
-    std::fprintf(stderr, "usage: fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--json]\n");
+    std::fprintf(stderr, "usage: fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--worst K] [--json]\n");
     return 2;
 }
 
@@ -165,11 +214,14 @@ int main(int argc, char **argv)
     const char *path = argv[1];
     int steps_per_period = 1000;
     bool check_step = false, json = false;
+    int worst_count = 0;
     for (int i = 2; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--steps-per-period") && i + 1 < argc)
             steps_per_period = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--check-step"))
             check_step = true;
+        else if (!std::strcmp(argv[i], "--worst") && i + 1 < argc)
+            worst_count = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--json"))
             json = true;
         else
@@ -198,6 +250,7 @@ int main(int argc, char **argv)
         return 1;
     }
     const Samples samples = sample_mesh(mesh);
+    const auto [min_angle, max_angle] = angle_range(mesh);
     const int32_t nverts = mesh.nverts;
     mesh_free(&mesh);
 
@@ -207,10 +260,12 @@ int main(int argc, char **argv)
     const Figures f = figures_of(samples, start, info);
     const double *worst = samples.xyz.data() + 3 * f.worst;
     std::printf("%s: %s, T = %g, t = %g, %d vertices, %zu samples, %d RK4 steps back: d max %.2e, RMS %.2e, "
-                "99th percentile %.2e, vertices' max %.2e, bias %+.2e; worst at (%.4f, %.4f, %.4f)%s\n",
+                "99th percentile %.2e, vertices' max %.2e and RMS %.2e, bias %+.2e; worst at (%.4f, %.4f, %.4f)%s; angles %.2f to %.2f degrees\n",
                 path, info.flow.c_str(), info.period, info.time, nverts, samples.weight.size(), steps, f.max, f.rms,
-                f.p99, f.vertex_max, f.bias, worst[0], worst[1], worst[2],
-                f.worst < static_cast<size_t>(samples.vertices) ? ", a vertex" : "");
+                f.p99, f.vertex_max, f.vertex_rms, f.bias, worst[0], worst[1], worst[2],
+                f.worst < static_cast<size_t>(samples.vertices) ? ", a vertex" : "", min_angle, max_angle);
+    if (worst_count > 0)
+        print_worst(samples, start, info, worst_count);
     double step_change = 0;
     if (check_step) {
         std::vector<double> finer = samples.xyz;
@@ -226,8 +281,8 @@ int main(int argc, char **argv)
     if (json)
         std::printf("{\"bench\":\"fidelity\",\"flow\":\"%s\",\"period\":%g,\"time\":%g,\"vertices\":%d,"
                     "\"samples\":%zu,\"rk4_steps\":%d,\"max\":%.3e,\"rms\":%.3e,\"p99\":%.3e,\"vertex_max\":%.3e,"
-                    "\"bias\":%.3e%s}\n",
+                    "\"vertex_rms\":%.3e,\"bias\":%.3e,\"min_angle\":%.2f,\"max_angle\":%.2f%s}\n",
                     info.flow.c_str(), info.period, info.time, nverts, samples.weight.size(), steps, f.max, f.rms,
-                    f.p99, f.vertex_max, f.bias, step_figure);
+                    f.p99, f.vertex_max, f.vertex_rms, f.bias, min_angle, max_angle, step_figure);
     return 0;
 }

@@ -101,7 +101,7 @@ int32_t Adaptation::pass(AdaptCounts &counts)
     const PassContext context{edit_, features_, guard()};
     // Repair first (§4): the density the desired edge length asks for, and no extreme
     // angles; then optimization (§3) of the repaired mesh.
-    const int32_t splits = timed(seconds_.repair, [&] { return splitting_pass(context, settings_.repair); });
+    const int32_t splits = timed(seconds_.repair, [&] { return splitting_pass(context, geometry_, settings_.repair); });
     analyse_changed();
     const int32_t contractions = timed(seconds_.repair, [&] {
         const int32_t made = contraction_pass(context, geometry_, settings_.repair);

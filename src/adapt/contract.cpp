@@ -2,6 +2,7 @@
 
 #include "geometry/circle.hpp"
 #include "geometry/edge_neighbourhood.hpp"
+#include "geometry/local_fit.hpp"
 #include "geometry/quadric_error.hpp"
 #include "geometry/self_intersection.hpp"
 
@@ -143,8 +144,12 @@ bool merge_crosses(const TriMesh &mesh, int32_t h, const Vec3 &merged, const Cro
 }
 
 // Where the merged vertex goes (§4.2), or false if the contraction would spoil a feature.
-// (The merged vertex takes the higher of the two ranks: carried_features.hpp.)
-bool merged_position(const TriMesh &mesh, int32_t h, const CarriedFeatures &features, Vec3 &merged)
+// (The merged vertex takes the higher of the two ranks: carried_features.hpp.) Between two
+// smooth vertices: over the centre, on the surface fitted around both ends (as a split's
+// new vertex, split.cpp), or where they cannot be fitted, the quadric error minimum of
+// the faces around the edge along their normal.
+bool merged_position(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h, const CarriedFeatures &features,
+                     Vec3 &merged)
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
     const int8_t ra = features.rank(a), rb = features.rank(b);
@@ -160,15 +165,17 @@ bool merged_position(const TriMesh &mesh, int32_t h, const CarriedFeatures &feat
         merged = curve_midpoint(features.next_along(mesh, a, b), mesh.pos[a], mesh.pos[b], features.next_along(mesh, b, a));
         return true;
     }
-    merged = (mesh.pos[a] + mesh.pos[b]) / 2;
+    const Vec3 centre = (mesh.pos[a] + mesh.pos[b]) / 2;
+    const double max_shift = max_shift_ratio * (mesh.pos[b] - mesh.pos[a]).norm();
+    if (onto_fitted_surface_of_ends(mesh, analysis.metric, a, true, b, true, centre, max_shift, merged))
+        return true;
     Vec3 normal = Vec3::Zero();
     mesh.for_each_face_around_edge(h, [&](int32_t f) {
         const Triangle &t = mesh.tri[f];
         normal += (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]);
     });
     merged = quadric_error_minimum_along(
-        mesh, [&](auto &&visit) { mesh.for_each_face_around_edge(h, visit); }, merged, normal.normalized(),
-        max_shift_ratio * (mesh.pos[b] - mesh.pos[a]).norm());
+        mesh, [&](auto &&visit) { mesh.for_each_face_around_edge(h, visit); }, centre, normal.normalized(), max_shift);
     return true;
 }
 
@@ -179,7 +186,7 @@ bool contraction_allowed(const TriMesh &mesh, const SurfaceAnalysis &analysis, i
                          std::vector<int32_t> &nearby, Vec3 &merged)
 {
     return wants_contraction(mesh, analysis, h, settings) && collapse_keeps_manifold(mesh, h) &&
-           merged_position(mesh, h, features, merged) && faces_survive(mesh, h, merged) &&
+           merged_position(mesh, analysis, h, features, merged) && faces_survive(mesh, h, merged) &&
            stays_clear_of_neighbours(mesh, h, merged, nearby);
 }
 

@@ -12,12 +12,14 @@ namespace sfa {
 // physical and metric space) is contracted, shortest first, if it still meets one when its
 // turn comes. The merged vertex takes the place of the end with the higher feature rank;
 // two ridge vertices merge at the midpoint of their ridge curve (geometry/circle.hpp), two
-// smooth ones at their midpoint moved along the normal to the quadric error minimum.
+// smooth ones over their midpoint on the surface fitted around both (geometry/local_fit.hpp),
+// or where that fit cannot be made, at their midpoint moved along the normal to the
+// quadric error minimum.
 // Refused: two corners, two feature vertices not joined by a ridge edge (that would merge
 // two ridge curves), anything the link condition forbids, any result that turns a face by
 // more than 60 degrees or nearly flattens it, or whose faces would pass through the faces
 // around the ends' neighbours or (with a guard) a watched face. `analysis` gives the metric
-// of the mesh as the pass finds it. The dead vertices and triangles stay until the edit
+// and frames of the mesh as the pass finds it. The dead vertices and triangles stay until the edit
 // compacts the mesh. Returns the number of contractions.
 int32_t contraction_pass(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings);
 

@@ -2,6 +2,7 @@
 
 #include "geometry/circle.hpp"
 #include "geometry/edge_neighbourhood.hpp"
+#include "geometry/local_fit.hpp"
 #include "geometry/quadric_error.hpp"
 
 #include <algorithm>
@@ -39,11 +40,18 @@ bool halves_keep_orientation(const TriMesh &mesh, int32_t h, const Vec3 &x)
     return ok;
 }
 
-// §4.1: the centre, moved along the normal to the quadric error minimum of the faces
-// around both ends; on a ridge or boundary edge, the midpoint of the curve through the
-// ridge neighbours (the centre where the ridge is straight); the centre itself where a
-// move would fold a half of the edge's triangles.
-Vec3 new_vertex_position(const TriMesh &mesh, int32_t h, bool on_ridge, const CarriedFeatures &features)
+// §4.1: the point over the centre on the surface fitted around the smooth ends (their
+// frames are the pass's analysis, made before any split of the pass: a vertex made in it
+// has none and is not fitted; a feature vertex's fan reaches across its crease); where no
+// end can be fitted, the centre moved along the normal to the quadric error minimum of
+// the faces around the smooth ends. On a ridge or
+// boundary edge, the midpoint of the curve through the ridge neighbours (the centre where
+// the ridge is straight). The centre itself where a move would fold a half of the edge's
+// triangles. The quadric error minimum is the paper's placement; it leaves the vertex off
+// the surface by a fraction of the sagitta, and over a period of the Enright flow those
+// offsets piled up to half of the vertices' backtrace error (bench/fidelity.cpp).
+Vec3 new_vertex_position(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h, bool on_ridge,
+                         const CarriedFeatures &features)
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
     const Vec3 centre = (mesh.pos[a] + mesh.pos[b]) / 2;
@@ -52,6 +60,13 @@ Vec3 new_vertex_position(const TriMesh &mesh, int32_t h, bool on_ridge, const Ca
             curve_midpoint(features.next_along(mesh, a, b), mesh.pos[a], mesh.pos[b], features.next_along(mesh, b, a));
         return halves_keep_orientation(mesh, h, on_curve) ? on_curve : centre;
     }
+    const double max_shift = max_shift_ratio * (mesh.pos[b] - mesh.pos[a]).norm();
+    const auto fits = [&](int32_t end) {
+        return features.rank(end) == 0 && end < static_cast<int32_t>(analysis.metric.size());
+    };
+    Vec3 fitted;
+    if (onto_fitted_surface_of_ends(mesh, analysis.metric, a, fits(a), b, fits(b), centre, max_shift, fitted))
+        return halves_keep_orientation(mesh, h, fitted) ? fitted : centre;
     Vec3 normal = Vec3::Zero();
     mesh.for_each_face_of_edge(h, [&](int32_t f) {
         const Triangle &t = mesh.tri[f];
@@ -67,7 +82,7 @@ Vec3 new_vertex_position(const TriMesh &mesh, int32_t h, bool on_ridge, const Ca
                 if (features.rank(end) == 0)
                     mesh.for_each_outgoing(end, [&](int32_t g) { visit(TriMesh::face(g)); });
         },
-        centre, normal.normalized(), max_shift_ratio * (mesh.pos[b] - mesh.pos[a]).norm());
+        centre, normal.normalized(), max_shift);
     return halves_keep_orientation(mesh, h, placed) ? placed : centre;
 }
 
@@ -101,8 +116,9 @@ public:
     // wants_split is the whole verdict, and it reads only the edge's triangles.
     static constexpr bool plans_ahead = false;
 
-    Splitting(const PassContext &context, const RepairSettings &settings)
-        : mesh_(context.edit.mesh()), settings_(settings), features_(context.features), guard_(context.guard)
+    Splitting(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings)
+        : mesh_(context.edit.mesh()), analysis_(analysis), settings_(settings), features_(context.features),
+          guard_(context.guard)
     {
     }
 
@@ -131,7 +147,7 @@ public:
     bool apply(MeshEdit &edit, int32_t h, const Plan &)
     {
         const bool on_ridge = features_.is_ridge(h) || mesh_.opp[h] < 0;
-        const Vec3 position = new_vertex_position(mesh_, h, on_ridge, features_);
+        const Vec3 position = new_vertex_position(mesh_, analysis_, h, on_ridge, features_);
         if (guard_ && split_crosses(mesh_, h, position, *guard_))
             return false;
         edit.split(h, position);
@@ -140,6 +156,7 @@ public:
 
 private:
     const TriMesh &mesh_;
+    const SurfaceAnalysis &analysis_;
     const RepairSettings &settings_;
     const CarriedFeatures &features_;
     const CrossingGuard *guard_;
@@ -147,9 +164,9 @@ private:
 
 } // namespace
 
-int32_t splitting_pass(const PassContext &context, const RepairSettings &settings)
+int32_t splitting_pass(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings)
 {
-    Splitting splitting(context, settings);
+    Splitting splitting(context, analysis, settings);
     return run_edge_pass(context.edit, splitting);
 }
 

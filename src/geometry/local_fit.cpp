@@ -1,10 +1,18 @@
 #include "geometry/local_fit.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace sfa {
 
 Vec3 onto_fitted_surface(const TriMesh &mesh, int32_t v, const VertexMetric &frame, const Vec3 &target)
+{
+    Vec3 placed = target;
+    fitted_surface_point(mesh, v, frame, target, placed);
+    return placed;
+}
+
+bool fitted_surface_point(const TriMesh &mesh, int32_t v, const VertexMetric &frame, const Vec3 &target, Vec3 &placed)
 {
     const Vec3 &p = mesh.pos[v];
     // Normal equations of the fit, scaled by the squared mean edge length so that their
@@ -27,7 +35,7 @@ Vec3 onto_fitted_surface(const TriMesh &mesh, int32_t v, const VertexMetric &fra
         ++count;
     });
     if (count < 5 || scale2 == 0)
-        return target;
+        return false;
     scale2 /= count;
     const double scale = std::sqrt(scale2);
     const auto add = [&](const Vec3 &d) {
@@ -54,18 +62,35 @@ Vec3 onto_fitted_surface(const TriMesh &mesh, int32_t v, const VertexMetric &fra
     // exceeds the estimate at most about a hundredfold, so that well above the threshold
     // the estimate is not needed either.
     if (solver.info() != Eigen::Success)
-        return target;
+        return false;
     const auto pivots = solver.matrixLLT().diagonal();
     const double pivot_ratio2 = std::pow(pivots.minCoeff() / pivots.maxCoeff(), 2);
     if (!(pivot_ratio2 > 1e-8) || (pivot_ratio2 < 1e-3 && !(solver.rcond() > 1e-8)))
-        return target;
+        return false;
     const Vector5 coefficients = solver.solve(right_side);
     const Vec3 d = target - p;
     const double u = d.dot(frame.major), s = d.dot(frame.minor);
     Vector5 at_target;
     at_target << u * u / scale2, u * s / scale2, s * s / scale2, u / scale, s / scale;
     const double height = coefficients.dot(at_target);
-    return p + u * frame.major + s * frame.minor + height * frame.normal;
+    placed = p + u * frame.major + s * frame.minor + height * frame.normal;
+    return true;
+}
+
+bool onto_fitted_surface_of_ends(const TriMesh &mesh, const std::vector<VertexMetric> &frames, int32_t a, bool fit_a,
+                                 int32_t b, bool fit_b, const Vec3 &start, double max_shift, Vec3 &placed)
+{
+    Vec3 sum = Vec3::Zero(), point;
+    int fitted = 0;
+    for (const auto &[end, fit] : {std::pair{a, fit_a}, std::pair{b, fit_b}})
+        if (fit && fitted_surface_point(mesh, end, frames[end], start, point)) {
+            sum += point;
+            ++fitted;
+        }
+    if (fitted == 0 || !((sum / fitted - start).norm() <= max_shift))
+        return false;
+    placed = sum / fitted;
+    return true;
 }
 
 } // namespace sfa

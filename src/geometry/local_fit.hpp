@@ -4,6 +4,8 @@
 
 #include "geometry/metric.hpp"
 
+#include <vector>
+
 namespace sfa {
 
 // The point of the quadratic height function h(u, w) = a u^2 + b u w + c w^2 + d u + e w
@@ -15,5 +17,17 @@ namespace sfa {
 // stays on the surface to third order. With fewer than five neighbours, or neighbours
 // that cannot determine the fit, `target` itself. Allocates nothing.
 Vec3 onto_fitted_surface(const TriMesh &mesh, int32_t v, const VertexMetric &frame, const Vec3 &target);
+
+// The same, but false (and `placed` untouched) where the fit cannot be made.
+bool fitted_surface_point(const TriMesh &mesh, int32_t v, const VertexMetric &frame, const Vec3 &target, Vec3 &placed);
+
+// Where a vertex made on the edge a-b goes (a split's new vertex, §4.1, a contraction's
+// merged one, §4.2): the points over `start` on the surfaces fitted around the ends that
+// `fit_a` and `fit_b` allow (the smooth ones: a feature end's fan reaches across its
+// crease), averaged, so that it does not depend on which end is which. False if no end
+// can be fitted or the point lies more than `max_shift` from `start` (the ends' fans then
+// describe no single smooth sheet). `frames` holds the frames of a and b.
+bool onto_fitted_surface_of_ends(const TriMesh &mesh, const std::vector<VertexMetric> &frames, int32_t a, bool fit_a,
+                                 int32_t b, bool fit_b, const Vec3 &start, double max_shift, Vec3 &placed);
 
 } // namespace sfa

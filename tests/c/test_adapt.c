@@ -215,6 +215,7 @@ static void anisotropic_meshes_are_as_close_to_the_surface_with_as_many_vertices
 typedef struct {
     int32_t corners, curves;
     double *corner_xyz; /* 3 per corner, sorted */
+    double mean_edge;   /* of the mesh they were found on */
 } feature_curves;
 
 static int compare_points(const void *a, const void *b)
@@ -257,7 +258,7 @@ static feature_curves curves_of(const sfa_surface *s)
                 parent[find_root(parent, e)] = find_root(parent, seen[v]);
         }
     }
-    feature_curves f = {0, 0, malloc(sizeof(double) * 3 * (size_t)m.nverts)};
+    feature_curves f = {0, 0, malloc(sizeof(double) * 3 * (size_t)m.nverts), measure(s, SFA_MEASURE_MEAN_EDGE_LENGTH)};
     for (int32_t e = 0; e < count; ++e)
         f.curves += find_root(parent, e) == e;
     for (int32_t v = 0; v < m.nverts; ++v)
@@ -302,6 +303,23 @@ static double share_of_good_triangles(const sfa_surface *s)
     return share;
 }
 
+/* The number of corners of `a` that `b` has within `distance` of theirs. */
+static int32_t corners_within(const feature_curves *a, const feature_curves *b, double distance)
+{
+    int32_t near = 0;
+    for (int32_t i = 0; i < a->corners; ++i) {
+        int found = 0;
+        for (int32_t j = 0; j < b->corners && !found; ++j) {
+            double d2 = 0;
+            for (int k = 0; k < 3; ++k)
+                d2 += pow(a->corner_xyz[3 * i + k] - b->corner_xyz[3 * j + k], 2);
+            found = d2 <= distance * distance;
+        }
+        near += found;
+    }
+    return near;
+}
+
 /* The number of corners of `a` that `b` has at exactly the same place. */
 static int32_t corners_in_place(const feature_curves *a, const feature_curves *b)
 {
@@ -343,8 +361,11 @@ static double adapt_real_model(const char *name, double scale, feature_curves *b
     return good;
 }
 
-/* A CAD part: the same feature curves and corners. One corner, where a crease fades out,
- * moves to the neighbouring ridge vertex: the crease's end is only known to an edge. */
+/* A CAD part: the same feature curves and corners, each corner within an edge of its
+ * place, and all but two exactly in place. Where a crease fades out (three corners of the
+ * fandisk, at y = 15.5 to 15.8) the crease's end is only known to an edge: detected afresh
+ * on the result, such a corner may sit at the neighbouring ridge vertex (0.05 to 0.13
+ * away at edge lengths of 0.06 and 0.25), as the smooth vertices around it settle. */
 static void fandisk_keeps_its_features_and_volume(void **state)
 {
     (void)state;
@@ -353,7 +374,8 @@ static void fandisk_keeps_its_features_and_volume(void **state)
         adapt_real_model("fandisk.obj", k == 0 ? 0.5 : 2, &before, &after);
         assert_int_equal(after.corners, before.corners);
         assert_int_equal(after.curves, before.curves);
-        assert_true(corners_in_place(&before, &after) >= before.corners - 1);
+        assert_int_equal(corners_within(&before, &after, after.mean_edge), before.corners);
+        assert_true(corners_in_place(&before, &after) >= before.corners - 2);
         free(before.corner_xyz);
         free(after.corner_xyz);
     }

@@ -28,10 +28,12 @@ start_is_floor() {
 }
 check "at t = 0 the vertices lie on the sphere and the triangles inside it (the floor)" start_is_floor
 check "halving the RK4 step changes no figure by 1e-6" below "$(figure "$work/end.txt" step_change)" 1e-6
-check "at t = T the RMS error is within 2.5 times the start mesh's" \
-  below "$(figure "$work/end.txt" rms)" "$(figure "$work/start.txt" rms)" 2.5
-check "at t = T the largest error is within 25 times the start mesh's" \
-  below "$(figure "$work/end.txt" max)" "$(figure "$work/start.txt" max)" 25
+# New and merged vertices placed by the quadric error of the faces around them (the
+# paper's placement) gave 2.3 and 22 times; placed on the local fit, 1.7 and 7.3 times.
+check "at t = T the RMS error is within 2 times the start mesh's" \
+  below "$(figure "$work/end.txt" rms)" "$(figure "$work/start.txt" rms)" 2
+check "at t = T the largest error is within 12 times the start mesh's" \
+  below "$(figure "$work/end.txt" max)" "$(figure "$work/start.txt" max)" 12
 
 check "the same run never remeshed (advection only) exits 0" \
   sh -c "'$tool' enright --resolution 16 --steps 50 --adapt-every 0 --no-smoothing --report-every 1000 \

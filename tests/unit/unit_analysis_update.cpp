@@ -63,7 +63,7 @@ void each_pass_leaves_the_analysis_a_full_one_would_give(void **)
         const PassContext context{edit, features, nullptr};
         const RepairSettings repair = repair_settings(parameters, length);
 
-        splits += splitting_pass(context, repair);
+        splits += splitting_pass(context, geometry, repair);
         tracked.update(mesh, bounds);
         assert_same_geometry(geometry, analyze_geometry(mesh, bounds));
 
