@@ -115,6 +115,29 @@ static void sphere_at_its_own_edge_length_gets_good_angles_and_keeps_volume(void
     sfa_destroy(s);
 }
 
+/* A blade 1 x 1 x 0.004 adapted at l = 0.1: its rims are two ridge curves 0.004 apart,
+ * nearer than the 0.01 (r l) at which feature vertices count as one feature, the way the
+ * vortex flow squeezes a sheet's rim into a cusp. The rims merge instead of leaving
+ * needles across the blade's edge; the volume stays. */
+static void ridge_curves_nearer_than_r_l_merge_instead_of_leaving_needles(void **state)
+{
+    (void)state;
+    const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 0.004};
+    sfa_mesh_data m = shape_box(10, lo, hi);
+    sfa_surface *s = make_surface(&m, 0);
+    const double volume = measure(s, SFA_MEASURE_VOLUME), min_angle = measure(s, SFA_MEASURE_MIN_ANGLE);
+    assert_int_equal(sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, 0.1), SFA_OK);
+    for (int call = 0; call < 3; ++call)
+        assert_ok(s, sfa_adapt(s));
+    const double change = measure(s, SFA_MEASURE_VOLUME) / volume - 1;
+    print_message("blade: min angle %.2f -> %.2f, max angle %.2f, volume change %.2e\n", min_angle,
+                  measure(s, SFA_MEASURE_MIN_ANGLE), measure(s, SFA_MEASURE_MAX_ANGLE), change);
+    assert_true(measure(s, SFA_MEASURE_MIN_ANGLE) > 5);
+    assert_true(fabs(change) < 1e-12);
+    mesh_free(&m);
+    sfa_destroy(s);
+}
+
 /* The distance from a mesh to an exact surface, sampled at every triangle's centroid and
  * edge midpoints (where chords are farthest from a curved surface). */
 typedef double (*exact_distance_fn)(const double p[3]);
@@ -524,6 +547,7 @@ int main(void)
         cmocka_unit_test(box_refined_keeps_corners_faces_volume_and_linear_fields),
         cmocka_unit_test(sphere_at_its_own_edge_length_gets_good_angles_and_keeps_volume),
         cmocka_unit_test(anisotropic_meshes_are_as_close_to_the_surface_with_as_many_vertices),
+        cmocka_unit_test(ridge_curves_nearer_than_r_l_merge_instead_of_leaving_needles),
         cmocka_unit_test(fandisk_keeps_its_features_and_volume),
         cmocka_unit_test(spot_keeps_its_volume_and_triangle_quality),
         cmocka_unit_test(nothing_lost_when_memory_runs_out),
