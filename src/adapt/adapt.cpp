@@ -44,10 +44,15 @@ public:
     // Each closed component's enclosed volume back and, if the connectivity changed, the
     // locality order; the vertices the guard watched, numbered as the mesh is now.
     std::vector<char> finish(AdaptCounts &counts);
-    // The components of the mesh as it is now.
+    // The components of the mesh as it is now, numbered and indexed.
     Components components() const
     {
-        return {static_cast<int32_t>(closed_.size()), component_of_.labels(), closed_};
+        Components components;
+        components.count = static_cast<int32_t>(closed_.size());
+        components.of_vertex = component_of_.labels();
+        components.closed = closed_;
+        index_components(mesh_, components);
+        return components;
     }
 
 private:

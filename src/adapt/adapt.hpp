@@ -34,8 +34,8 @@ struct AdaptCounts {
 // return `near_sheet` holds them, numbered as the returned mesh (empty without the guard).
 // The analyses are made in `workspace`, whose contents on entry do not matter and on
 // return mean nothing; keeping it from call to call keeps its memory. `components` are
-// those of the mesh on entry, and on return those of the returned mesh (with the same
-// numbers: the topology does not change).
+// those of the mesh on entry, and on return those of the returned mesh, numbered and
+// indexed as connected_components would (the topology does not change).
 AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
                           std::vector<char> &near_sheet, SurfaceAnalysis &workspace, Components &components);
 

@@ -100,7 +100,7 @@ SFA_EXPORT int sfa_measure_component(const sfa_surface *s, int32_t component, in
             fail(Status::argument, message);
         }
         require_mesh(s);
-        const Components components = connected_components(s->mesh);
+        const Components &components = s->components;
         if (component < 0 || component >= components.count) {
             char message[160];
             std::snprintf(message, sizeof message, "there is no component %d: the surface has %d (numbered 0 to %d)",

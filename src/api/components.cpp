@@ -3,6 +3,8 @@
 
 #include "mesh/components.hpp"
 
+#include <algorithm>
+
 using namespace sfa;
 
 extern "C" {
@@ -27,8 +29,7 @@ SFA_EXPORT int sfa_get_components(const sfa_surface *s, int32_t capacity, int32_
                           s->mesh.num_vertices(), capacity);
             fail(Status::argument, message);
         }
-        const Components components = connected_components(s->mesh);
-        std::copy(components.of_vertex.begin(), components.of_vertex.end(), vertex_component);
+        std::copy(s->components.of_vertex.begin(), s->components.of_vertex.end(), vertex_component);
     });
 }
 

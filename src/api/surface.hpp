@@ -21,9 +21,8 @@ struct sfa_surface {
     sfa::Parameters params;
     std::vector<sfa::Vec3> velocity; // empty until sfa_set_velocities
     std::vector<sfa::VertexField> fields;
-    // The components of the current connectivity, which only sfa_set_mesh and sfa_adapt
-    // change: each closed one keeps its own volume. (Numbered as the last sfa_set_mesh
-    // found them; sfa_get_components numbers them afresh.)
+    // The components of the current connectivity, numbered and indexed (mesh/components.hpp),
+    // which only sfa_set_mesh and sfa_adapt change: each closed one keeps its own volume.
     sfa::Components components;
     sfa::PhaseTimes seconds_spent; // by the successful sfa_smooth and sfa_adapt calls
     double volume_correction = 0;  // SFA_MEASURE_VOLUME_CORRECTION of the last of them

@@ -73,6 +73,19 @@ static void components_are_numbered_by_their_first_vertex(void **state)
     assert_int_equal(of[0], 0);
     assert_int_equal(of[sheet], 1);
     assert_int_equal(of[sheet + big], 2);
+
+    /* sfa_adapt renumbers the vertices for locality: the components follow the same rule. */
+    assert_ok(s, sfa_adapt(s));
+    int32_t nv = 0;
+    assert_ok(s, sfa_get_counts(s, &nv, NULL));
+    of = realloc(of, sizeof(int32_t) * (size_t)nv);
+    assert_ok(s, sfa_get_components(s, nv, of));
+    int32_t seen = 0; /* components met so far: each first vertex opens the next number */
+    for (int32_t v = 0; v < nv; ++v) {
+        assert_true(of[v] <= seen);
+        seen += of[v] == seen;
+    }
+    assert_int_equal(seen, 3);
     free(of);
     mesh_free(&r);
     mesh_free(&m);
