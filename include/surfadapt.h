@@ -121,7 +121,10 @@ enum sfa_param {
     /** S / l: "absolute small triangle" contraction threshold (§4.2); the default is
         §4.3's S = R l. A ratio to l, > 0; default 0.5. */
     SFA_PARAM_CONTRACT_LENGTH_RATIO = 8,
-    /** r: "relative shortness" contraction ratio (§4.2). A ratio, in (0, 1); default 0.1. */
+    /** r: "relative shortness" contraction ratio (§4.2). Two feature vertices (corners or
+        ridge vertices) nearer than r l count as one feature: their edge may be contracted
+        although that joins two corners or ridge curves (a cusp squeezed by the flow).
+        A ratio, in (0, 1); default 0.1. */
     SFA_PARAM_CONTRACT_SHORT_RATIO = 9,
     /** R: "relative small triangle" contraction ratio (§4.2). A ratio, in (0, 1);
         default 0.5. */
