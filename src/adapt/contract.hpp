@@ -16,11 +16,13 @@ namespace sfa {
 // or where that fit cannot be made, at their midpoint moved along the normal to the
 // quadric error minimum.
 // Refused: two corners, two feature vertices not joined by a ridge edge (that would merge
-// two ridge curves), anything the link condition forbids, any result that turns a face by
-// more than 60 degrees or nearly flattens it, or whose faces would pass through the faces
-// around the ends' neighbours or (with a guard) a watched face. `analysis` gives the metric
-// and frames of the mesh as the pass finds it. The dead vertices and triangles stay until the edit
-// compacts the mesh. Returns the number of contractions.
+// two ridge curves), unless they are nearer than r l (one feature, then: they merge at the
+// one of higher rank, or halfway); anything the link condition forbids, any result that
+// turns a face by more than 60 degrees or nearly flattens it, or whose faces would pass
+// through the faces around the ends' neighbours or (with a guard) a watched face.
+// `analysis` gives the metric and frames of the mesh as the pass finds it. The dead
+// vertices and triangles stay until the edit compacts the mesh. Returns the number of
+// contractions.
 int32_t contraction_pass(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings);
 
 } // namespace sfa

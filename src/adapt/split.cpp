@@ -44,12 +44,12 @@ bool halves_keep_orientation(const TriMesh &mesh, int32_t h, const Vec3 &x)
 // frames are the pass's analysis, made before any split of the pass: a vertex made in it
 // has none and is not fitted; a feature vertex's fan reaches across its crease); where no
 // end can be fitted, the centre moved along the normal to the quadric error minimum of
-// the faces around the smooth ends. On a ridge or
-// boundary edge, the midpoint of the curve through the ridge neighbours (the centre where
-// the ridge is straight). The centre itself where a move would fold a half of the edge's
-// triangles. The quadric error minimum is the paper's placement; it leaves the vertex off
-// the surface by a fraction of the sagitta, and over a period of the Enright flow those
-// offsets piled up to half of the vertices' backtrace error (bench/fidelity.cpp).
+// the faces around the smooth ends. On a ridge or boundary edge, the midpoint of the
+// curve through the ridge neighbours (the centre where the ridge is straight). The centre
+// itself where a move would fold a half of the edge's triangles. The quadric error
+// minimum is the paper's placement; it leaves the vertex off the surface by a fraction of
+// the sagitta, and over a period of the Enright flow those offsets piled up to half of
+// the vertices' backtrace error (bench/fidelity.cpp).
 Vec3 new_vertex_position(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h, bool on_ridge,
                          const CarriedFeatures &features)
 {

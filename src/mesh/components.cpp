@@ -36,18 +36,21 @@ Components connected_components(const TriMesh &mesh)
 
 void index_components(const TriMesh &mesh, Components &components)
 {
-    // The new number of each old one, given as the components' first vertices come.
+    // The new number of each old one, given as the components' first vertices come (a
+    // label no vertex has any more is dropped).
     std::vector<int32_t> renumbered(components.count, -1);
     int32_t next = 0;
     for (int32_t label : components.of_vertex)
         if (renumbered[label] < 0)
             renumbered[label] = next++;
-    std::vector<char> closed(components.count);
+    std::vector<char> closed(next);
     for (int32_t c = 0; c < components.count; ++c)
-        closed[renumbered[c]] = components.closed[c];
+        if (renumbered[c] >= 0)
+            closed[renumbered[c]] = components.closed[c];
     for (int32_t &label : components.of_vertex)
         label = renumbered[label];
     components.closed.swap(closed);
+    components.count = next;
 
     // Counting sort of the triangles by component.
     components.triangle_start.assign(components.count + 1, 0);
