@@ -134,15 +134,21 @@ struct Figures {
     size_t worst = 0; // the sample of the largest error
 };
 
-Figures figures_of(const Samples &samples, const std::vector<double> &start, const Checkpoint &info)
+// (|p0 - c| - r) / r of every sample, from where it started (`start`, 3 per sample).
+std::vector<double> signed_errors(const std::vector<double> &start, const Checkpoint &info)
 {
-    const size_t n = samples.weight.size();
-    std::vector<double> signed_error(n);
-    for (size_t i = 0; i < n; ++i) {
+    std::vector<double> error(start.size() / 3);
+    for (size_t i = 0; i < error.size(); ++i) {
         const double dx = start[3 * i] - info.centre[0], dy = start[3 * i + 1] - info.centre[1],
                      dz = start[3 * i + 2] - info.centre[2];
-        signed_error[i] = (std::sqrt(dx * dx + dy * dy + dz * dz) - info.radius) / info.radius;
+        error[i] = (std::sqrt(dx * dx + dy * dy + dz * dz) - info.radius) / info.radius;
     }
+    return error;
+}
+
+Figures figures_of(const Samples &samples, const std::vector<double> &signed_error)
+{
+    const size_t n = samples.weight.size();
     Figures f;
     double area = 0, square = 0, sum = 0;
     std::vector<std::pair<double, double>> weighted; // (d, weight) of the triangles' points
@@ -178,14 +184,11 @@ Figures figures_of(const Samples &samples, const std::vector<double> &start, con
 }
 
 // The `count` samples of the largest error: where the error comes from.
-void print_worst(const Samples &samples, const std::vector<double> &start, const Checkpoint &info, int count)
+void print_worst(const Samples &samples, const std::vector<double> &signed_error, int count)
 {
     std::vector<std::pair<double, size_t>> errors;
-    for (size_t i = 0; i < samples.weight.size(); ++i) {
-        const double dx = start[3 * i] - info.centre[0], dy = start[3 * i + 1] - info.centre[1],
-                     dz = start[3 * i + 2] - info.centre[2];
-        errors.emplace_back((std::sqrt(dx * dx + dy * dy + dz * dz) - info.radius) / info.radius, i);
-    }
+    for (size_t i = 0; i < signed_error.size(); ++i)
+        errors.emplace_back(signed_error[i], i);
     const size_t shown = std::min(errors.size(), static_cast<size_t>(count));
     std::partial_sort(errors.begin(), errors.begin() + shown, errors.end(),
                       [](const auto &p, const auto &q) { return std::abs(p.first) > std::abs(q.first); });
@@ -257,7 +260,8 @@ int main(int argc, char **argv)
     const int steps = std::max(1, static_cast<int>(std::ceil(info.time / info.period * steps_per_period)));
     std::vector<double> start = samples.xyz;
     backtrace(velocity, info.period, info.time, steps, start);
-    const Figures f = figures_of(samples, start, info);
+    const std::vector<double> errors = signed_errors(start, info);
+    const Figures f = figures_of(samples, errors);
     const double *worst = samples.xyz.data() + 3 * f.worst;
     std::printf("%s: %s, T = %g, t = %g, %d vertices, %zu samples, %d RK4 steps back: d max %.2e, RMS %.2e, "
                 "99th percentile %.2e, vertices' max %.2e and RMS %.2e, bias %+.2e; worst at (%.4f, %.4f, %.4f)%s; angles %.2f to %.2f degrees\n",
@@ -265,12 +269,12 @@ int main(int argc, char **argv)
                 f.p99, f.vertex_max, f.vertex_rms, f.bias, worst[0], worst[1], worst[2],
                 f.worst < static_cast<size_t>(samples.vertices) ? ", a vertex" : "", min_angle, max_angle);
     if (worst_count > 0)
-        print_worst(samples, start, info, worst_count);
+        print_worst(samples, errors, worst_count);
     double step_change = 0;
     if (check_step) {
         std::vector<double> finer = samples.xyz;
         backtrace(velocity, info.period, info.time, 2 * steps, finer);
-        const Figures g = figures_of(samples, finer, info);
+        const Figures g = figures_of(samples, signed_errors(finer, info));
         step_change = std::max({std::abs(g.max - f.max), std::abs(g.rms - f.rms), std::abs(g.p99 - f.p99),
                                 std::abs(g.vertex_max - f.vertex_max), std::abs(g.bias - f.bias)});
         std::printf("  halving the step changes the figures by at most %.1e\n", step_change);
