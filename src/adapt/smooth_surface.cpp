@@ -33,7 +33,7 @@ SmoothResult smooth_surface(TriMesh &mesh, std::vector<VertexField> &fields, con
         edit.move(moved);
         result.volume_correction =
             std::max(result.volume_correction,
-                     restore_enclosed_volumes(mesh, analysis.features.rank, components.of_vertex, volumes,
+                     restore_enclosed_volumes(edit, analysis.features.rank, components.of_vertex, volumes,
                                               components.closed, settings.volume_correction));
     }
     return result;

@@ -46,7 +46,7 @@ std::vector<double> component_volumes(const TriMesh &mesh, const std::vector<int
     return volume;
 }
 
-double restore_enclosed_volumes(TriMesh &mesh, const std::vector<int8_t> &rank, const std::vector<int32_t> &label,
+double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank, const std::vector<int32_t> &label,
                                 const std::vector<double> &volume, const std::vector<char> &closed, bool correct)
 {
     // Every smooth vertex moves by its component's offset o along its unit volume gradient
@@ -54,6 +54,7 @@ double restore_enclosed_volumes(TriMesh &mesh, const std::vector<int8_t> &rank, 
     // det(p_0 + o n_0, p_1 + o n_1, p_2 + o n_2). One pass gathers the four coefficients of
     // every component, and Newton's method on each cubic finds its offset to round-off
     // without touching the mesh again.
+    const TriMesh &mesh = edit.mesh();
     const int32_t n = mesh.num_vertices(), count = static_cast<int32_t>(volume.size());
     std::vector<Vec3> normal(n, Vec3::Zero());
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
@@ -101,7 +102,7 @@ double restore_enclosed_volumes(TriMesh &mesh, const std::vector<int8_t> &rank, 
             if (label[v] == c)
                 moved[v] = mesh.pos[v];
     }
-    mesh.pos.swap(moved);
+    edit.offset(moved);
     return largest_change;
 }
 

@@ -1,7 +1,7 @@
 // Keeping the enclosed volume of every closed component (bubble, drop) on its own.
 #pragma once
 
-#include "mesh/tri_mesh.hpp"
+#include "mesh/mesh_edit.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -22,11 +22,11 @@ std::vector<double> component_volumes(const TriMesh &mesh, const std::vector<int
 // another. Features do not move; open components are not corrected. The volume is an
 // exact cubic in the offset, solved by Newton's method, so the result is exact to
 // round-off; a component whose offset would fold a triangle is left as it is. With
-// `correct` false, nothing moves.
+// `correct` false, nothing moves. The vertices move through `edit` (MeshEdit::offset).
 // Returns the largest relative volume change |V - volume[c]| / |volume[c]| of a closed
 // component before the correction: how far the operations themselves came from keeping
 // the volume.
-double restore_enclosed_volumes(TriMesh &mesh, const std::vector<int8_t> &rank, const std::vector<int32_t> &label,
+double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank, const std::vector<int32_t> &label,
                                 const std::vector<double> &volume, const std::vector<char> &closed, bool correct);
 
 } // namespace sfa

@@ -103,6 +103,13 @@ void MeshEdit::move(std::vector<Vec3> &positions)
     mesh_.pos.swap(positions);
 }
 
+void MeshEdit::offset(std::vector<Vec3> &positions)
+{
+    for (EditListener *listener : listeners_)
+        listener->offset(mesh_, positions);
+    mesh_.pos.swap(positions);
+}
+
 void MeshEdit::compact()
 {
     const int32_t vertices = mesh_.num_vertices(), triangles = mesh_.num_triangles();

@@ -69,6 +69,9 @@ public:
     virtual void flip(const TriMesh &, const FlipChange &) {}
     // Heard before: the mesh still has the old positions.
     virtual void move(const TriMesh &, const MoveChange &) {}
+    // Vertices move off the surface, along their normals, to the given positions (the
+    // volume correction): what lives on a vertex stays with it. Heard before, as move().
+    virtual void offset(const TriMesh &, const std::vector<Vec3> & /*positions*/) {}
     virtual void renumber(const Renumbering &) {}
 };
 
@@ -95,6 +98,9 @@ public:
     void flip(int32_t h);
     // Moves every vertex v to positions[v]; on return `positions` holds the old positions.
     void move(std::vector<Vec3> &positions);
+    // Moves every vertex v to positions[v] off the surface (EditListener::offset); on
+    // return `positions` holds the old positions.
+    void offset(std::vector<Vec3> &positions);
     // Removes dead elements, the survivors in their order (compact()).
     void compact();
     // Renumbers vertices and triangles for locality (order_for_locality()).
