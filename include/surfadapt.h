@@ -187,7 +187,25 @@ enum sfa_param {
         that what the operations alone do to the volumes can be seen. Either way
         ::SFA_MEASURE_VOLUME_CORRECTION reports how far the operations left a volume.
         A flag, 0 or 1; default 1. */
-    SFA_PARAM_VOLUME_CORRECTION = 21
+    SFA_PARAM_VOLUME_CORRECTION = 21,
+    /** How fast the desired edge length of a size field (sfa_set_size_field()) may change
+        over the surface: before each sfa_adapt() the sizes are lowered where needed so
+        that along the mesh l grows by at most (gradation - 1) times the distance
+        travelled, l_v <= l_w + (gradation - 1) |x_v - x_w|; neighbouring edges of the
+        desired length then differ by at most this factor (MMG's "hgrad"). Where the host
+        asks for fine edges it gets them; the coarse side starts coarsening a short way
+        off. Without a size field it has no effect. A ratio, > 1; default 1.5. */
+    SFA_PARAM_SIZE_GRADATION = 22,
+    /** Absolute shortness, a contraction criterion added to those of §4.2: an edge shorter
+        than this ratio of l in both physical and metric space (eq. 4), and the shortest of
+        its triangles, is contracted. The paper's criteria stop coarsening once every
+        triangle's longest edge reaches S = ::SFA_PARAM_CONTRACT_LENGTH_RATIO l, so that a
+        mesh finer than asked kept a mean edge of about S (0.53 l) instead of l; with this
+        criterion the edges settle between it and L = ::SFA_PARAM_SPLIT_LENGTH_RATIO l from
+        either side. Measured in metric space it leaves the short edges across a ridge or a
+        tight curve, which the anisotropic metric asks for. 0: the paper's criteria alone.
+        A ratio to l, in [0, 1); default 0.6. */
+    SFA_PARAM_SHORT_EDGE_RATIO = 23
 };
 
 /** Quantities for sfa_measure(). */
@@ -405,13 +423,27 @@ int sfa_get_param_bounds(int key, double *lowest, double *highest);
 
 /**
  * Sets the velocity of every current vertex, used by sfa_move(). They stay set until
- * the next sfa_set_velocities() or sfa_set_mesh().
+ * the next sfa_set_velocities() or sfa_set_mesh(); sfa_adapt() carries them to the new
+ * vertices.
+ * @warning The length of `vel` is taken to be 3 times the current vertex count, which
+ * sfa_adapt() changes: an array sized for the mesh before it is read past its end. Prefer
+ * sfa_set_velocities_checked(), which is told the count the array was made for.
  * @param s   the surface.
  * @param vel `3*nverts` velocity components, length units per time unit (read only, not kept).
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer), ::SFA_ERR_STATE (no mesh),
  *         ::SFA_ERR_NUMERIC (a non-finite component; names the vertex), ::SFA_ERR_MEMORY.
  */
 int sfa_set_velocities(sfa_surface *s, const double *vel);
+
+/**
+ * sfa_set_velocities() for an array made for `nverts` vertices: ::SFA_ERR_ARGUMENT, with
+ * a message that says both counts, when the mesh has another number of vertices (a stale
+ * array from before an sfa_adapt() call). Nothing else differs.
+ * @param s      the surface.
+ * @param nverts the number of vertices `vel` holds velocities for.
+ * @param vel    `3*nverts` velocity components (read only, not kept).
+ */
+int sfa_set_velocities_checked(sfa_surface *s, int32_t nverts, const double *vel);
 
 /**
  * Moves every vertex by one explicit Euler step with the velocities set:
@@ -572,6 +604,70 @@ int sfa_get_ridge_edges(const sfa_surface *s, int32_t capacity, int32_t *edges, 
  */
 int sfa_measure(const sfa_surface *s, int quantity, double *value);
 
+/* ----------------------------------------------------------- host control */
+
+/**
+ * A desired edge length for every current vertex (e.g. the flow solver's local grid
+ * spacing), in place of ::SFA_PARAM_EDGE_LENGTH: where it is set, the thresholds of mesh
+ * repair (split, contract; paper §4.3) are those of the local l, the mean of an edge's
+ * ends' values, while the anisotropic metric still shapes the triangles. Before each
+ * sfa_adapt() the sizes are graded (::SFA_PARAM_SIZE_GRADATION) so that the mesh can
+ * follow them smoothly. The sizes are carried through motion (each vertex keeps its own),
+ * smoothing and adaptation (interpolated at new vertices; the grading stays) until
+ * replaced, cleared, or dropped by sfa_set_mesh().
+ * @warning `edge_length` is taken to hold one value per current vertex: prefer
+ * sfa_set_size_field_checked().
+ * @param s           the surface.
+ * @param edge_length `nverts` lengths > 0, host length units (read only, not kept); NULL
+ *                    clears the size field, and ::SFA_PARAM_EDGE_LENGTH applies again.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL handle; a value <= 0 or not finite: names the
+ *         vertex, in the numbering of the last sfa_set_mesh(); nothing changed),
+ *         ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY.
+ */
+int sfa_set_size_field(sfa_surface *s, const double *edge_length);
+
+/**
+ * sfa_set_size_field() for an array made for `nverts` vertices: ::SFA_ERR_ARGUMENT when
+ * the mesh has another number of vertices. With `edge_length` NULL it clears, as
+ * sfa_set_size_field() does.
+ */
+int sfa_set_size_field_checked(sfa_surface *s, int32_t nverts, const double *edge_length);
+
+/**
+ * Fixes vertices: sfa_smooth() and sfa_adapt() never move them (nor does the volume
+ * correction) and never remove them: a contraction next to one keeps it where it is, and
+ * an edge between two fixed vertices is never contracted. Edges at them may still be
+ * split and flipped (use sfa_set_required_edges() to keep edges). Motion (sfa_move(),
+ * sfa_advect()) still moves them with their velocities. They follow the renumbering of
+ * sfa_adapt() and stay fixed until the next call, which replaces the whole set, or
+ * sfa_set_mesh(), which drops it.
+ * @param s          the surface.
+ * @param count      number of vertices; 0 clears the set (`vertices` may then be NULL).
+ * @param vertices   `count` vertex indices (read only, not kept); repeats are allowed.
+ * @param index_base 0 or 1, the base of the indices.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer with count > 0, count < 0, bad
+ *         index_base, an index that is not a vertex: names its position and value; nothing
+ *         changed), ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY.
+ */
+int sfa_set_fixed_vertices(sfa_surface *s, int32_t count, const int32_t *vertices, int32_t index_base);
+
+/**
+ * Requires edges: sfa_smooth() and sfa_adapt() keep them exactly, never splitting,
+ * flipping or contracting them, and their ends are fixed (as by sfa_set_fixed_vertices(),
+ * on top of that set), e.g. a contact line or the seam with a structure. They follow the
+ * renumbering of sfa_adapt() until the next call, which replaces the whole set, or
+ * sfa_set_mesh().
+ * @param s          the surface.
+ * @param count      number of edges; 0 clears the set (`edges` may then be NULL).
+ * @param edges      `2*count` vertex indices, `edges[2*i]` and `edges[2*i+1]` the ends of
+ *                   edge i, in either order (read only, not kept).
+ * @param index_base 0 or 1, the base of the indices.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer with count > 0, count < 0, bad
+ *         index_base, an index that is not a vertex, a pair that is not an edge of the mesh:
+ *         names the pair; nothing changed), ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY.
+ */
+int sfa_set_required_edges(sfa_surface *s, int32_t count, const int32_t *edges, int32_t index_base);
+
 /* ------------------------------------------------------------- components */
 
 /**
@@ -625,6 +721,17 @@ int sfa_measure_component(const sfa_surface *s, int32_t component, int quantity,
  *         ::SFA_ERR_NUMERIC (a non-finite value; names the vertex), ::SFA_ERR_MEMORY.
  */
 int sfa_add_field(sfa_surface *s, int32_t ncomp, const double *values, int32_t *field_id);
+
+/**
+ * sfa_add_field() for an array made for `nverts` vertices: ::SFA_ERR_ARGUMENT when the
+ * mesh has another number of vertices (sfa_add_field() would read past the array's end).
+ * @param s        the surface.
+ * @param nverts   the number of vertices `values` holds values for.
+ * @param ncomp    components per vertex, >= 1.
+ * @param values   `ncomp*nverts` values (read only, not kept); finite.
+ * @param field_id receives the id of the field.
+ */
+int sfa_add_field_checked(sfa_surface *s, int32_t nverts, int32_t ncomp, const double *values, int32_t *field_id);
 
 /**
  * Copies a field's values on the current vertices out.
@@ -681,6 +788,16 @@ typedef struct sfa_api {
     int (*get_components)(const sfa_surface *s, int32_t capacity, int32_t *vertex_component); /**< sfa_get_components() */
     int (*measure_component)(const sfa_surface *s, int32_t component, int quantity,
                              double *value);                  /**< sfa_measure_component() */
+    int (*set_velocities_checked)(sfa_surface *s, int32_t nverts, const double *vel); /**< sfa_set_velocities_checked() */
+    int (*add_field_checked)(sfa_surface *s, int32_t nverts, int32_t ncomp, const double *values,
+                             int32_t *field_id);              /**< sfa_add_field_checked() */
+    int (*set_size_field)(sfa_surface *s, const double *edge_length); /**< sfa_set_size_field() */
+    int (*set_size_field_checked)(sfa_surface *s, int32_t nverts,
+                                  const double *edge_length); /**< sfa_set_size_field_checked() */
+    int (*set_fixed_vertices)(sfa_surface *s, int32_t count, const int32_t *vertices,
+                              int32_t index_base);            /**< sfa_set_fixed_vertices() */
+    int (*set_required_edges)(sfa_surface *s, int32_t count, const int32_t *edges,
+                              int32_t index_base);            /**< sfa_set_required_edges() */
 } sfa_api;
 
 /**

@@ -14,7 +14,7 @@
 !> host's own, as in C. Status codes are integer(c_int), SFA_OK == 0.
 module surfadapt
   use, intrinsic :: iso_c_binding, only: c_int, c_int32_t, c_int64_t, c_double, c_ptr, &
-       c_funptr, c_char, c_size_t, c_associated, c_f_pointer
+       c_funptr, c_char, c_size_t, c_associated, c_f_pointer, c_null_ptr
   implicit none
   private
 
@@ -59,6 +59,8 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_PARAM_ADAPT_PASSES = 19
   integer(c_int), parameter, public :: SFA_PARAM_CROSSING_GUARD = 20
   integer(c_int), parameter, public :: SFA_PARAM_VOLUME_CORRECTION = 21
+  integer(c_int), parameter, public :: SFA_PARAM_SIZE_GRADATION = 22
+  integer(c_int), parameter, public :: SFA_PARAM_SHORT_EDGE_RATIO = 23
 
   ! --------------------------------------------------- enum sfa_measure_quantity
   integer(c_int), parameter, public :: SFA_MEASURE_VOLUME = 0
@@ -86,6 +88,9 @@ module surfadapt
   public :: sfa_get_feature_ranks, sfa_measure
   public :: sfa_get_component_count, sfa_get_components, sfa_measure_component
   public :: sfa_add_field, sfa_get_field
+  public :: sfa_set_velocities_checked, sfa_add_field_checked
+  public :: sfa_set_size_field, sfa_set_size_field_checked, sfa_clear_size_field
+  public :: sfa_set_fixed_vertices, sfa_set_required_edges
   public :: sfa_get_vertex_frames, sfa_get_ridge_edges
   public :: sfa_get_api
 
@@ -293,6 +298,61 @@ module surfadapt
       integer(c_int) :: sfa_add_field
     end function sfa_add_field
 
+    !> The checked variants take the number of vertices the host's array was made for,
+    !> and refuse an array made for another mesh (SFA_ERR_ARGUMENT).
+    function sfa_add_field_checked(s, nverts, ncomp, values, field_id) bind(C, name='sfa_add_field_checked')
+      import :: c_int, c_int32_t, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: nverts, ncomp
+      real(c_double), intent(in) :: values(*)
+      integer(c_int32_t), intent(out) :: field_id
+      integer(c_int) :: sfa_add_field_checked
+    end function sfa_add_field_checked
+
+    function sfa_set_velocities_checked(s, nverts, vel) bind(C, name='sfa_set_velocities_checked')
+      import :: c_int, c_int32_t, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: nverts
+      real(c_double), intent(in) :: vel(*)
+      integer(c_int) :: sfa_set_velocities_checked
+    end function sfa_set_velocities_checked
+
+    !> One desired edge length per vertex (host units, > 0); sfa_clear_size_field clears it.
+    function sfa_set_size_field(s, edge_length) bind(C, name='sfa_set_size_field')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), intent(in) :: edge_length(*)
+      integer(c_int) :: sfa_set_size_field
+    end function sfa_set_size_field
+
+    function sfa_set_size_field_checked(s, nverts, edge_length) bind(C, name='sfa_set_size_field_checked')
+      import :: c_int, c_int32_t, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: nverts
+      real(c_double), intent(in) :: edge_length(*)
+      integer(c_int) :: sfa_set_size_field_checked
+    end function sfa_set_size_field_checked
+
+    !> index_base 1 for Fortran numbering; count 0 clears.
+    function sfa_set_fixed_vertices(s, count, vertices, index_base) bind(C, name='sfa_set_fixed_vertices')
+      import :: c_int, c_int32_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: count
+      integer(c_int32_t), intent(in) :: vertices(*)
+      integer(c_int32_t), value :: index_base
+      integer(c_int) :: sfa_set_fixed_vertices
+    end function sfa_set_fixed_vertices
+
+    !> edges(2, count): the two ends of each required edge; count 0 clears.
+    function sfa_set_required_edges(s, count, edges, index_base) bind(C, name='sfa_set_required_edges')
+      import :: c_int, c_int32_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: count
+      integer(c_int32_t), intent(in) :: edges(*)
+      integer(c_int32_t), value :: index_base
+      integer(c_int) :: sfa_set_required_edges
+    end function sfa_set_required_edges
+
     function sfa_get_field(s, field_id, capacity, values) bind(C, name='sfa_get_field')
       import :: c_int, c_int32_t, c_double, c_ptr
       type(c_ptr), value :: s
@@ -343,6 +403,14 @@ module surfadapt
       type(c_ptr), value :: str
       integer(c_size_t) :: c_strlen
     end function c_strlen
+
+    ! sfa_set_size_field with a pointer argument, so that NULL (clear) can be passed.
+    function sfa_set_size_field_ptr(s, edge_length) bind(C, name='sfa_set_size_field')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: s
+      type(c_ptr), value :: edge_length
+      integer(c_int) :: sfa_set_size_field_ptr
+    end function sfa_set_size_field_ptr
   end interface
 
 contains
@@ -448,5 +516,13 @@ contains
     rc = sfa_get_feature_ranks(s, nv, ranks)
     if (rc /= SFA_OK) deallocate(ranks)
   end function sfa_get_feature_ranks_alloc
+
+  !> Clears the size field (sfa_set_size_field(s, NULL) in C): SFA_PARAM_EDGE_LENGTH
+  !> applies everywhere again. Returns a status.
+  function sfa_clear_size_field(s) result(rc)
+    type(c_ptr), intent(in) :: s
+    integer(c_int) :: rc
+    rc = sfa_set_size_field_ptr(s, c_null_ptr)
+  end function sfa_clear_size_field
 
 end module surfadapt

@@ -3,6 +3,7 @@
 #include "adapt/carried_features.hpp"
 #include "adapt/contract.hpp"
 #include "adapt/flip.hpp"
+#include "adapt/size_field.hpp"
 #include "adapt/smooth.hpp"
 #include "adapt/split.hpp"
 #include "adapt/volume.hpp"
@@ -19,14 +20,18 @@ constexpr double settled_fraction = 1e-2;
 // One sfa_adapt call: the edit, and everything attached to it that follows its changes.
 class Adaptation {
 public:
-    Adaptation(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
-               SurfaceAnalysis &workspace, const Components &components, PhaseTimes &seconds)
+    // `size`: the graded desired length of every vertex, the last of `fields` (or null).
+    Adaptation(TriMesh &mesh, std::vector<VertexField> &fields, const std::vector<double> *size,
+               const Constraints &constraints, const AdaptSettings &settings, SurfaceAnalysis &workspace,
+               const Components &components, PhaseTimes &seconds)
         : mesh_(mesh), settings_(settings), seconds_(seconds), geometry_(workspace), edit_(mesh),
-          carried_fields_(fields), features_(detected_features()), tracked_(geometry_, mesh), guard_listener_(guard_),
-          closed_(components.closed), component_of_(components.of_vertex),
-          volumes_(component_volumes(mesh, components.of_vertex, components.count))
+          carried_fields_(fields), size_(size), constraints_(mesh, constraints), features_(detected_features()),
+          tracked_(geometry_, mesh), guard_listener_(guard_), closed_(components.closed),
+          component_of_(components.of_vertex), volumes_(component_volumes(mesh, components.of_vertex, components.count))
     {
         edit_.attach(carried_fields_);
+        if (!constraints.empty())
+            edit_.attach(constraints_);
         edit_.attach(features_);
         edit_.attach(tracked_);
         edit_.attach(component_of_);
@@ -44,6 +49,8 @@ public:
     // Each closed component's enclosed volume back and, if the connectivity changed, the
     // locality order; the vertices the guard watched, numbered as the mesh is now.
     std::vector<char> finish(AdaptCounts &counts);
+    // What the host pinned, numbered as the mesh is now.
+    Constraints constraints() const { return constraints_.as_host(mesh_); }
     // The components of the mesh as it is now, numbered and indexed.
     Components components() const
     {
@@ -63,9 +70,11 @@ private:
     // every vertex has moved (at the start and after each sweep). After splitting,
     // contraction and flipping only the vertices whose fans changed are analysed anew
     // (tracked_analysis.hpp): the same result as a full analysis, for a fraction of its cost.
+    // Fixed vertices are carried as corners.
     const Features &detected_features()
     {
         timed(seconds_.analysis, [&] { analyze_surface(mesh_, settings_.features, settings_.metric, geometry_); });
+        constraints_.impose_on(geometry_.features.rank);
         return geometry_.features;
     }
     void analyse_all()
@@ -88,6 +97,8 @@ private:
     SurfaceAnalysis &geometry_;
     MeshEdit edit_;
     CarriedFields carried_fields_;
+    const std::vector<double> *size_;
+    CarriedConstraints constraints_; // before features_, which it shapes
     CarriedFeatures features_;
     TrackedAnalysis tracked_;
     CrossingGuard guard_;
@@ -103,7 +114,7 @@ int32_t Adaptation::pass(AdaptCounts &counts)
 {
     if (++counts.passes > 1)
         analyse_all(); // the last pass's sweeps moved every vertex
-    const PassContext context{edit_, features_, guard()};
+    const PassContext context{edit_, features_, guard(), constraints_, size_};
     // Repair first (§4): the density the desired edge length asks for, and no extreme
     // angles; then optimization (§3) of the repaired mesh.
     const int32_t splits = timed(seconds_.repair, [&] { return splitting_pass(context, geometry_, settings_.repair); });
@@ -135,8 +146,9 @@ std::vector<char> Adaptation::finish(AdaptCounts &counts)
         // The offsets move vertices along their normals, not over the surface: their fields
         // stay with them.
         PhaseClock clock(seconds_.smoothing);
-        counts.volume_correction = restore_enclosed_volumes(edit_, features_.ranks(), component_of_.labels(), volumes_,
-                                                            closed_, settings_.volume_correction);
+        counts.volume_correction =
+            restore_enclosed_volumes(edit_, features_.ranks(), guard(), component_of_.labels(), volumes_,
+                                     closed_, settings_.volume_correction);
     }
     // New vertices and triangles were appended where they were made: put neighbours next
     // to each other in memory again, for every loop until the next adaptation. Only what
@@ -152,11 +164,17 @@ std::vector<char> Adaptation::finish(AdaptCounts &counts)
 
 } // namespace
 
-AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
+AdaptCounts adapt_surface(TriMesh &mesh, SurfaceData &data, const AdaptSettings &settings,
                           std::vector<char> &near_sheet, SurfaceAnalysis &workspace, Components &components)
 {
     AdaptCounts counts;
-    Adaptation adaptation(mesh, fields, settings, workspace, components, counts.seconds);
+    // The size field travels as one more field, graded first; the grading stays (it only
+    // lowers sizes, and grading a graded field changes nothing).
+    const bool sized = !data.size.empty();
+    if (sized)
+        data.fields.push_back({1, graded_sizes(mesh, std::move(data.size), settings.size_gradation)});
+    const std::vector<double> *size = sized ? &data.fields.back().values : nullptr;
+    Adaptation adaptation(mesh, data.fields, size, data.constraints, settings, workspace, components, counts.seconds);
     while (counts.passes < settings.max_passes) {
         // Settled: after the first pass or two, the changes of a pass dwindle to a few edges
         // in a thousand (on a dynamic surface, the second pass of a call changes about 0.5 %
@@ -168,6 +186,12 @@ AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const
     }
     near_sheet = adaptation.finish(counts);
     components = adaptation.components();
+    if (!data.constraints.empty())
+        data.constraints = adaptation.constraints();
+    if (sized) {
+        data.size.swap(data.fields.back().values);
+        data.fields.pop_back();
+    }
     return counts;
 }
 

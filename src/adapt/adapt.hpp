@@ -4,7 +4,7 @@
 
 #include "adapt/phase_times.hpp"
 #include "adapt/settings.hpp"
-#include "fields/vertex_fields.hpp"
+#include "adapt/surface_data.hpp"
 #include "mesh/components.hpp"
 
 #include <vector>
@@ -26,8 +26,10 @@ struct AdaptCounts {
 // its own enclosed volume back (restore_enclosed_volumes, unless settings say not to), and
 // if edges were split or contracted,
 // the mesh is renumbered for locality (locality_order.hpp). Every change goes through one
-// edit (mesh/mesh_edit.hpp), which carries the fields (one value set per vertex) and
-// everything else that lives on the mesh. The mesh stays dense and valid. The seconds of
+// edit (mesh/mesh_edit.hpp), which carries the host's data (surface_data.hpp) and
+// everything else that lives on the mesh. Where the host set a size field, it is graded
+// (size_field.hpp) and takes the place of the global l; fixed vertices and required edges
+// stay as they are (constraints.hpp). The mesh stays dense and valid. The seconds of
 // each phase are counted in the result. With the crossing guard, no step carries the
 // surface through itself where it is thinner than an edge (crossing_guard.hpp): the
 // vertices near a facing sheet are found at the start and carried through the call; on
@@ -36,7 +38,7 @@ struct AdaptCounts {
 // return mean nothing; keeping it from call to call keeps its memory. `components` are
 // those of the mesh on entry, and on return those of the returned mesh, numbered and
 // indexed as connected_components would (the topology does not change).
-AdaptCounts adapt_surface(TriMesh &mesh, std::vector<VertexField> &fields, const AdaptSettings &settings,
+AdaptCounts adapt_surface(TriMesh &mesh, SurfaceData &data, const AdaptSettings &settings,
                           std::vector<char> &near_sheet, SurfaceAnalysis &workspace, Components &components);
 
 } // namespace sfa

@@ -1,5 +1,6 @@
 #include "adapt/contract.hpp"
 
+#include "adapt/size_field.hpp"
 #include "geometry/circle.hpp"
 #include "geometry/edge_neighbourhood.hpp"
 #include "geometry/local_fit.hpp"
@@ -39,7 +40,9 @@ MetricLengths metric_lengths(const TriMesh &mesh, const SurfaceAnalysis &analysi
     return out;
 }
 
-bool wants_contraction(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h, const RepairSettings &s)
+// `coarsens`: absolute shortness may apply (shortness_applies).
+bool wants_contraction(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h, const RepairSettings &s,
+                       bool coarsens)
 {
     const EdgeNeighbourhood n = edge_neighbourhood(mesh, h);
     for (int k = 0; k < n.triangles; ++k)
@@ -49,11 +52,26 @@ bool wants_contraction(const TriMesh &mesh, const SurfaceAnalysis &analysis, int
         return true; // relative shortness
     if (n.longest < s.contract_length && n.length <= n.shortest)
         return true; // absolute small triangle
+    if (coarsens && n.length < s.short_edge_length && n.length <= n.shortest &&
+        metric_lengths(mesh, analysis, h).metric_length < s.short_edge_length)
+        return true; // absolute shortness (not the paper's: it makes a mesh coarsen to l, not to S)
     if (n.longest < s.desired_length && n.length < s.contract_small_ratio * n.longest) {
         const MetricLengths metric = metric_lengths(mesh, analysis, h); // relative small triangle,
         return metric.metric_length < s.contract_small_ratio * metric.metric_longest; // in both spaces
     }
     return false;
+}
+
+// Absolute shortness (RepairSettings::short_edge_length) coarsens a smooth region only: it
+// leaves an edge between two feature vertices (the paper's criteria keep ridge curves as
+// they were; coarsened too, the fandisk's faded creases showed up as new curves), and an
+// edge with an end near a facing sheet (crossing_guard.hpp), where the two sides are
+// nearer than an edge and fewer vertices let a later step carry one through the other
+// (the vortex flow of T = 6 crossed so).
+bool shortness_applies(const TriMesh &mesh, int32_t h, const CarriedFeatures &features, const CrossingGuard *guard)
+{
+    const int32_t a = mesh.tail(h), b = mesh.head(h);
+    return !(features.rank(a) > 0 && features.rank(b) > 0) && !(guard && (guard->watches(a) || guard->watches(b)));
 }
 
 // True if moving both ends of h to `merged` keeps every surviving face's orientation
@@ -155,8 +173,11 @@ bool merge_crosses(const TriMesh &mesh, int32_t h, const Vec3 &merged, const Cro
 // features of an evolving surface include the cusps at the rims of sheets thinner than an
 // edge, where the flow squeezes such vertices together: kept apart, they left needles of
 // 0.1 degrees in the vortex flow of T = 6.
+//
+// A fixed vertex (constraints.hpp) is a corner that stays where it is: the pass keeps it
+// (h's head) and never contracts two.
 bool merged_position(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h, const CarriedFeatures &features,
-                     double one_feature, Vec3 &merged)
+                     const CarriedConstraints &constraints, double one_feature, Vec3 &merged)
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
     const int8_t ra = features.rank(a), rb = features.rank(b);
@@ -164,7 +185,7 @@ bool merged_position(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32
         // Otherwise a corner would disappear, or two ridge curves (or a curve and a corner) would merge.
         if (!((mesh.pos[b] - mesh.pos[a]).norm() < one_feature))
             return false;
-        merged = ra == rb ? Vec3((mesh.pos[a] + mesh.pos[b]) / 2) : mesh.pos[ra > rb ? a : b];
+        merged = constraints.fixed(b) || ra != rb ? mesh.pos[ra > rb ? a : b] : Vec3((mesh.pos[a] + mesh.pos[b]) / 2);
         return true;
     }
     if (ra != rb) {
@@ -190,13 +211,15 @@ bool merged_position(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32
 }
 
 // Every check of contracting h but the crossing guard's; the merged vertex's position if
-// it passes. `nearby`: scratch for stays_clear_of_neighbours.
+// it passes. `coarsens`: shortness_applies. `nearby`: scratch for stays_clear_of_neighbours.
 bool contraction_allowed(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h,
                          const RepairSettings &settings, const CarriedFeatures &features,
-                         std::vector<int32_t> &nearby, Vec3 &merged)
+                         const CarriedConstraints &constraints, bool coarsens, std::vector<int32_t> &nearby,
+                         Vec3 &merged)
 {
-    return wants_contraction(mesh, analysis, h, settings) && collapse_keeps_manifold(mesh, h) &&
-           merged_position(mesh, analysis, h, features, settings.contract_short_ratio * settings.desired_length, merged) &&
+    return wants_contraction(mesh, analysis, h, settings, coarsens) && collapse_keeps_manifold(mesh, h) &&
+           merged_position(mesh, analysis, h, features, constraints,
+                           settings.contract_short_ratio * settings.desired_length, merged) &&
            faces_survive(mesh, h, merged) &&
            stays_clear_of_neighbours(mesh, h, merged, nearby);
 }
@@ -237,8 +260,9 @@ public:
     static constexpr bool plans_ahead = true;
 
     Contraction(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings)
-        : mesh_(context.edit.mesh()), analysis_(analysis), settings_(settings), features_(context.features),
-          guard_(context.guard), nearby_(loop_threads())
+        : mesh_(context.edit.mesh()), analysis_(analysis), repair_(settings, context.size),
+          features_(context.features), constraints_(context.constraints), guard_(context.guard),
+          nearby_(loop_threads())
     {
         // stays_clear_of_neighbours lists at most every fan of the neighbours of both ends:
         // each thread's list is allocated for that here, so that none grows in a parallel loop.
@@ -255,18 +279,28 @@ public:
 
     bool wanted(int32_t h, double &order) const
     {
-        if (!wants_contraction(mesh_, analysis_, h, settings_))
+        if (constraints_.fixed(mesh_.tail(h)) && constraints_.fixed(mesh_.head(h)))
+            return false; // neither may go (a required edge's ends are both fixed)
+        if (!wants_contraction(mesh_, analysis_, h, repair_.at_edge(mesh_, h),
+                               shortness_applies(mesh_, h, features_, guard_)))
             return false;
         order = (mesh_.pos[mesh_.head(h)] - mesh_.pos[mesh_.tail(h)]).norm(); // shortest first (§4.2)
         return true;
     }
+    // The edge as (gone -> keep), a fixed end kept (-1 where that is a boundary edge's
+    // missing half).
     int32_t locate(int32_t a, int32_t b) const
     {
-        return is_dead_vertex(mesh_, a) || is_dead_vertex(mesh_, b) ? -1 : edge_between(mesh_, a, b);
+        if (is_dead_vertex(mesh_, a) || is_dead_vertex(mesh_, b))
+            return -1;
+        const int32_t h = edge_between(mesh_, a, b);
+        return h >= 0 && constraints_.fixed(mesh_.tail(h)) ? mesh_.opp[h] : h;
     }
     bool plan(int32_t h, Plan &plan) const
     {
-        return contraction_allowed(mesh_, analysis_, h, settings_, features_, nearby_[thread_index()], plan.merged);
+        return contraction_allowed(mesh_, analysis_, h, repair_.at_edge(mesh_, h), features_, constraints_,
+                                   shortness_applies(mesh_, h, features_, guard_), nearby_[thread_index()],
+                                   plan.merged);
     }
     // Each contraction marks the merged vertex and its neighbours.
     bool may_have_changed(int32_t h, const ChangedVertices &changed) const
@@ -284,8 +318,9 @@ public:
 private:
     const TriMesh &mesh_;
     const SurfaceAnalysis &analysis_;
-    const RepairSettings &settings_;
+    const LocalRepair repair_;
     const CarriedFeatures &features_;
+    const CarriedConstraints &constraints_;
     const CrossingGuard *guard_;
     mutable std::vector<std::vector<int32_t>> nearby_; // scratch per thread
 };

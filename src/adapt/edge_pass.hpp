@@ -7,6 +7,7 @@
 #pragma once
 
 #include "adapt/carried_features.hpp"
+#include "adapt/constraints.hpp"
 #include "geometry/crossing_guard.hpp"
 #include "mesh/changed_vertices.hpp"
 #include "mesh/mesh_edit.hpp"
@@ -19,12 +20,16 @@
 namespace sfa {
 
 // What every pass of an adaptation works with: the edit through which it changes the mesh
-// (with every attribute and observer attached), the features carried through the call, and
-// the crossing guard if it is on (null otherwise).
+// (with every attribute and observer attached), the features carried through the call, the
+// crossing guard if it is on (null otherwise), what the host pinned, and the desired edge
+// length of every vertex where the host set a size field (graded, size_field.hpp; null:
+// the one global l).
 struct PassContext {
     MeshEdit &edit;
     const CarriedFeatures &features;
     const CrossingGuard *guard;
+    const CarriedConstraints &constraints;
+    const std::vector<double> *size;
 };
 
 // Runs one pass of `operation`, which supplies:

@@ -109,14 +109,15 @@ public:
     static constexpr bool plans_ahead = false;
 
     Flipping(const PassContext &context, const SurfaceAnalysis &analysis, const FlipSettings &settings)
-        : mesh_(context.edit.mesh()), features_(context.features), guard_(context.guard), settings_(settings),
+        : mesh_(context.edit.mesh()), features_(context.features), constraints_(context.constraints),
+          guard_(context.guard), settings_(settings),
           cos_max_dihedral_(std::cos(settings.max_dihedral)), quadric_(analysis.quadric)
     {
     }
 
     bool wanted(int32_t h, double &order) const
     {
-        if (mesh_.opp[h] < 0 || features_.is_ridge(h))
+        if (mesh_.opp[h] < 0 || features_.is_ridge(h) || constraints_.required(h))
             return false;
         // The manifold test walks a fan through memory far apart: only for the few edges
         // that would flip.
@@ -129,7 +130,7 @@ public:
     int32_t locate(int32_t a, int32_t b) const { return mesh_.halfedge(a, b); }
     bool plan(int32_t h, Plan &) const
     {
-        return !features_.is_ridge(h) && flip_keeps_manifold(mesh_, h) &&
+        return !features_.is_ridge(h) && !constraints_.required(h) && flip_keeps_manifold(mesh_, h) &&
                judge(mesh_, h, quadric_, settings_, cos_max_dihedral_).flip;
     }
     bool may_have_changed(int32_t h, const ChangedVertices &changed) const
@@ -151,6 +152,7 @@ public:
 private:
     const TriMesh &mesh_;
     const CarriedFeatures &features_;
+    const CarriedConstraints &constraints_;
     const CrossingGuard *guard_;
     const FlipSettings &settings_;
     const double cos_max_dihedral_;
@@ -170,7 +172,8 @@ int32_t flipping_pass(TriMesh &mesh, const SurfaceAnalysis &analysis, const Flip
     MeshEdit edit(mesh);
     CarriedFeatures features(analysis.features);
     edit.attach(features);
-    return flipping_pass(PassContext{edit, features, nullptr}, analysis, settings);
+    const CarriedConstraints none;
+    return flipping_pass(PassContext{edit, features, nullptr, none, nullptr}, analysis, settings);
 }
 
 } // namespace sfa

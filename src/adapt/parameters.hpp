@@ -30,6 +30,8 @@ enum class Param : int {
     adapt_passes,
     crossing_guard,
     volume_correction,
+    size_gradation,
+    short_edge_ratio,
     count
 };
 

@@ -38,6 +38,7 @@ RepairSettings repair_settings(const Parameters &p, double l)
             p.get(Param::split_length_ratio) * l,
             p.get(Param::split_shortest_ratio) * l,
             p.get(Param::contract_length_ratio) * l,
+            p.get(Param::short_edge_ratio) * l,
             p.get(Param::contract_short_ratio),
             p.get(Param::contract_small_ratio),
             std::cos(p.get(Param::small_angle) * radians_per_degree),
@@ -66,7 +67,8 @@ AdaptSettings adapt_settings(const Parameters &p, double default_edge_length)
             smoothing_sweeps_per_pass,
             p.get(Param::denoise),
             p.get(Param::crossing_guard) != 0,
-            p.get(Param::volume_correction) != 0};
+            p.get(Param::volume_correction) != 0,
+            p.get(Param::size_gradation)};
 }
 
 } // namespace sfa

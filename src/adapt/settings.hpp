@@ -14,6 +14,7 @@ struct RepairSettings {
     double split_length;         // L: absolute longness
     double split_shortest;       // s: relative longness needs every nearby edge at least this long
     double contract_length;      // S: absolute small triangle
+    double short_edge_length;    // absolute shortness, in metric space (not the paper's)
     double contract_short_ratio; // r: relative shortness
     double contract_small_ratio; // R: relative small triangle
     double cos_small_angle;      // cos theta_s
@@ -45,6 +46,7 @@ struct AdaptSettings {
     double denoise;       // weight in every sweep (smoothing_sweep)
     bool crossing_guard;  // no step passes the surface through itself (crossing_guard.hpp)
     bool volume_correction; // closed components get their volumes back (restore_enclosed_volumes)
+    double size_gradation;  // of a host's size field (size_field.hpp)
 };
 
 FeatureThresholds feature_thresholds(const Parameters &parameters);

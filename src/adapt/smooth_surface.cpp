@@ -8,7 +8,7 @@
 
 namespace sfa {
 
-SmoothResult smooth_surface(TriMesh &mesh, std::vector<VertexField> &fields, const SmoothSettings &settings,
+SmoothResult smooth_surface(TriMesh &mesh, SurfaceData &data, const SmoothSettings &settings,
                             int32_t sweeps, const std::vector<char> &near_sheet, SurfaceAnalysis &workspace,
                             const Components &components)
 {
@@ -21,20 +21,31 @@ SmoothResult smooth_surface(TriMesh &mesh, std::vector<VertexField> &fields, con
         guard = timed(seconds.analysis, [&] {
             return CrossingGuard(near_sheet.size() == mesh.pos.size() ? near_sheet : near_facing_sheet(mesh));
         });
+    const bool sized = !data.size.empty();
+    if (sized)
+        data.fields.push_back({1, std::move(data.size)});
     MeshEdit edit(mesh);
-    CarriedFields carried_fields(fields);
+    CarriedFields carried_fields(data.fields);
     edit.attach(carried_fields);
+    const CarriedConstraints constraints(mesh, data.constraints); // nothing changes them here
     SurfaceAnalysis &analysis = workspace;
     for (int32_t sweep = 0; sweep < sweeps; ++sweep) {
-        timed(seconds.analysis, [&] { analyze_surface(mesh, settings.features, settings.metric, analysis); });
+        timed(seconds.analysis, [&] {
+            analyze_surface(mesh, settings.features, settings.metric, analysis);
+            constraints.impose_on(analysis.features.rank);
+        });
         PhaseClock clock(seconds.smoothing);
         std::vector<Vec3> moved =
             smoothing_sweep(mesh, analysis, settings.denoise, settings.crossing_guard ? &guard : nullptr);
         edit.move(moved);
         result.volume_correction =
             std::max(result.volume_correction,
-                     restore_enclosed_volumes(edit, analysis.features.rank, components.of_vertex, volumes,
-                                              components.closed, settings.volume_correction));
+                     restore_enclosed_volumes(edit, analysis.features.rank, settings.crossing_guard ? &guard : nullptr, components.of_vertex,
+                                              volumes, components.closed, settings.volume_correction));
+    }
+    if (sized) {
+        data.size.swap(data.fields.back().values);
+        data.fields.pop_back();
     }
     return result;
 }

@@ -4,7 +4,7 @@
 
 #include "adapt/phase_times.hpp"
 #include "adapt/settings.hpp"
-#include "fields/vertex_fields.hpp"
+#include "adapt/surface_data.hpp"
 #include "mesh/components.hpp"
 
 #include <vector>
@@ -19,12 +19,13 @@ struct SmoothResult {
 };
 
 // `sweeps` times: the surface analysed, one sweep (smoothing_sweep) made through an edit
-// that carries the fields, and each closed component's enclosed volume restored. With the
+// that carries the host's data (the size field interpolated as a field), and each closed
+// component's enclosed volume restored. Fixed vertices are corners (constraints.hpp). With the
 // crossing guard, the vertices watched are those of `near_sheet` if it has one mark per
 // vertex (the last adaptation's findings: a flow adapts every few steps, and a sheet thins
 // slowly), else this surface's own. The analyses are made in `workspace` (as for
 // adapt_surface); `components` are the mesh's.
-SmoothResult smooth_surface(TriMesh &mesh, std::vector<VertexField> &fields, const SmoothSettings &settings,
+SmoothResult smooth_surface(TriMesh &mesh, SurfaceData &data, const SmoothSettings &settings,
                             int32_t sweeps, const std::vector<char> &near_sheet, SurfaceAnalysis &workspace,
                             const Components &components);
 

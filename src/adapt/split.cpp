@@ -1,5 +1,6 @@
 #include "adapt/split.hpp"
 
+#include "adapt/size_field.hpp"
 #include "geometry/circle.hpp"
 #include "geometry/edge_neighbourhood.hpp"
 #include "geometry/local_fit.hpp"
@@ -117,18 +118,21 @@ public:
     static constexpr bool plans_ahead = false;
 
     Splitting(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings)
-        : mesh_(context.edit.mesh()), analysis_(analysis), settings_(settings), features_(context.features),
-          guard_(context.guard)
+        : mesh_(context.edit.mesh()), analysis_(analysis), repair_(settings, context.size),
+          features_(context.features), constraints_(context.constraints), guard_(context.guard)
     {
     }
 
     bool wanted(int32_t h, double &order) const
     {
+        if (constraints_.required(h))
+            return false;
         // Both criteria need the edge longer than l or L: most edges are not, and their
         // neighbourhood need not be looked at.
+        const RepairSettings settings = repair_.at_edge(mesh_, h);
         const double length = (mesh_.pos[mesh_.head(h)] - mesh_.pos[mesh_.tail(h)]).norm();
-        if (!(length > settings_.desired_length || length > settings_.split_length) ||
-            !wants_split(edge_neighbourhood(mesh_, h), settings_))
+        if (!(length > settings.desired_length || length > settings.split_length) ||
+            !wants_split(edge_neighbourhood(mesh_, h), settings))
             return false;
         order = -length; // longest first (§4.1)
         return true;
@@ -138,7 +142,7 @@ public:
         const int32_t h = mesh_.halfedge(a, b);
         return h >= 0 ? h : mesh_.halfedge(b, a); // a boundary edge has one direction only
     }
-    bool plan(int32_t h, Plan &) const { return wants_split(edge_neighbourhood(mesh_, h), settings_); }
+    bool plan(int32_t h, Plan &) const { return wants_split(edge_neighbourhood(mesh_, h), repair_.at_edge(mesh_, h)); }
     // An edge's triangles change only in a split of one of their edges, which marks their corners.
     bool may_have_changed(int32_t h, const ChangedVertices &changed) const
     {
@@ -157,8 +161,9 @@ public:
 private:
     const TriMesh &mesh_;
     const SurfaceAnalysis &analysis_;
-    const RepairSettings &settings_;
+    const LocalRepair repair_;
     const CarriedFeatures &features_;
+    const CarriedConstraints &constraints_;
     const CrossingGuard *guard_;
 };
 

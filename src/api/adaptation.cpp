@@ -11,6 +11,44 @@
 
 using namespace sfa;
 
+namespace {
+
+// A copy of what the host keeps on the surface, in the form smoothing and adaptation carry
+// it: the velocities travel as the last vertex field.
+SurfaceData carried_data(const sfa_surface *s)
+{
+    SurfaceData data{s->fields, s->size_field, s->face_fields, s->constraints};
+    if (!s->velocity.empty()) {
+        VertexField velocity{3, std::vector<double>(3 * s->velocity.size())};
+        for (size_t v = 0; v < s->velocity.size(); ++v)
+            for (int c = 0; c < 3; ++c)
+                velocity.values[3 * v + c] = s->velocity[v][c];
+        data.fields.push_back(std::move(velocity));
+    }
+    return data;
+}
+
+// Takes the carried data back into the handle: allocates first, then commits without
+// throwing, so that a failure leaves the handle as it was.
+void commit(sfa_surface *s, SurfaceData &data)
+{
+    std::vector<Vec3> velocity;
+    if (!s->velocity.empty()) {
+        const VertexField &carried = data.fields.back();
+        velocity.resize(carried.values.size() / 3);
+        for (size_t v = 0; v < velocity.size(); ++v)
+            velocity[v] = Vec3(carried.values.data() + 3 * v);
+        data.fields.pop_back();
+    }
+    s->fields.swap(data.fields);
+    s->velocity.swap(velocity);
+    s->size_field.swap(data.size);
+    s->face_fields.swap(data.face_fields);
+    std::swap(s->constraints, data.constraints);
+}
+
+} // namespace
+
 extern "C" {
 
 SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
@@ -21,19 +59,19 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
         const SmoothSettings settings = smooth_settings(s->params);
         // Sweeps move vertices only: work on the handle's mesh with its positions saved (the
         // connectivity is not copied, a step of a flow calls this on every step), and on a
-        // copy of the fields; if anything fails, the positions go back.
+        // copy of the host's data; if anything fails, the positions go back.
         TriMesh &mesh = s->mesh;
         const std::vector<Vec3> saved_positions = mesh.pos;
-        std::vector<VertexField> fields = s->fields;
+        SurfaceData data = carried_data(s);
         SmoothResult result;
         try {
-            result = smooth_surface(mesh, fields, settings, iterations, s->near_sheet, s->analysis_workspace,
+            result = smooth_surface(mesh, data, settings, iterations, s->near_sheet, s->analysis_workspace,
                                     s->components);
+            commit(s, data);
         } catch (...) {
             std::copy(saved_positions.begin(), saved_positions.end(), mesh.pos.begin()); // same size: no allocation
             throw;
         }
-        s->fields.swap(fields);
         s->seconds_spent += result.seconds;
         s->volume_correction = result.volume_correction;
     });
@@ -45,17 +83,9 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
         require_mesh(s);
         const AdaptSettings settings = adapt_settings(s->params, s->mean_edge_length_at_set);
 
-        // Work on copies; the velocities travel as one more field. Commit only at the end.
+        // Work on copies. Commit only at the end.
         TriMesh mesh = s->mesh;
-        std::vector<VertexField> data = s->fields;
-        const bool has_velocity = !s->velocity.empty();
-        if (has_velocity) {
-            VertexField velocity{3, std::vector<double>(3 * s->velocity.size())};
-            for (size_t v = 0; v < s->velocity.size(); ++v)
-                for (int c = 0; c < 3; ++c)
-                    velocity.values[3 * v + c] = s->velocity[v][c];
-            data.push_back(std::move(velocity));
-        }
+        SurfaceData data = carried_data(s);
         std::vector<char> near_sheet;
         Components components = s->components;
         const AdaptCounts counts = adapt_surface(mesh, data, settings, near_sheet, s->analysis_workspace, components);
@@ -63,16 +93,9 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
         if (!broken.empty())
             fail(Status::internal, ("the adapted mesh is broken (" + broken + "); the surface is unchanged").c_str());
 
-        std::vector<Vec3> velocity;
-        if (has_velocity) {
-            velocity.resize(mesh.pos.size());
-            for (size_t v = 0; v < velocity.size(); ++v)
-                velocity[v] = Vec3(data.back().values.data() + 3 * v);
-            data.pop_back();
-        }
+        commit(s, data);
         s->mesh = std::move(mesh);
-        s->fields.swap(data);
-        s->velocity.swap(velocity);
+        s->counts_set_by = "sfa_adapt";
         s->near_sheet.swap(near_sheet);
         std::swap(s->components, components);
         s->seconds_spent += counts.seconds;

@@ -62,4 +62,16 @@ inline void require_mesh(const sfa_surface *s)
         fail(Status::state, "no mesh has been set yet (call sfa_set_mesh first)");
 }
 
+// For the checked variants of the functions that read one value set per vertex or per
+// triangle: the count the host's array was made for must be the mesh's.
+inline void require_count(const sfa_surface *s, const char *elements, int32_t mesh_has, int32_t array_has)
+{
+    if (array_has == mesh_has)
+        return;
+    char message[200];
+    std::snprintf(message, sizeof message, "the mesh has %d %s since the last %s; the array given has %d", mesh_has,
+                  elements, s->counts_set_by, array_has);
+    fail(Status::argument, message);
+}
+
 } // namespace sfa

@@ -5,19 +5,43 @@
 
 using namespace sfa;
 
+namespace {
+
+void require_field_arguments(const sfa_surface *s, int32_t ncomp, const double *values, const int32_t *field_id)
+{
+    require(values && field_id, "values or field_id is NULL");
+    require(ncomp >= 1, "ncomp must be >= 1");
+    require_mesh(s);
+    require(static_cast<int64_t>(ncomp) * s->mesh.num_vertices() <= INT32_MAX,
+            "ncomp * nverts must fit in int32_t (capacities are int32_t)");
+}
+
+void add_field(sfa_surface *s, int32_t ncomp, const double *values, int32_t *field_id)
+{
+    VertexField field = checked_field(ncomp, values, s->mesh.num_vertices(), s->index_base);
+    s->fields.push_back(std::move(field)); // strong guarantee: unchanged if it throws
+    *field_id = static_cast<int32_t>(s->fields.size()) - 1;
+}
+
+} // namespace
+
 extern "C" {
 
 SFA_EXPORT int sfa_add_field(sfa_surface *s, int32_t ncomp, const double *values, int32_t *field_id)
 {
     return call(s, "sfa_add_field", [&] {
-        require(values && field_id, "values or field_id is NULL");
-        require(ncomp >= 1, "ncomp must be >= 1");
-        require_mesh(s);
-        require(static_cast<int64_t>(ncomp) * s->mesh.num_vertices() <= INT32_MAX,
-                "ncomp * nverts must fit in int32_t (capacities are int32_t)");
-        VertexField field = checked_field(ncomp, values, s->mesh.num_vertices(), s->index_base);
-        s->fields.push_back(std::move(field)); // strong guarantee: unchanged if it throws
-        *field_id = static_cast<int32_t>(s->fields.size()) - 1;
+        require_field_arguments(s, ncomp, values, field_id);
+        add_field(s, ncomp, values, field_id);
+    });
+}
+
+SFA_EXPORT int sfa_add_field_checked(sfa_surface *s, int32_t nverts, int32_t ncomp, const double *values,
+                                     int32_t *field_id)
+{
+    return call(s, "sfa_add_field_checked", [&] {
+        require_field_arguments(s, ncomp, values, field_id);
+        require_count(s, "vertices", s->mesh.num_vertices(), nverts);
+        add_field(s, ncomp, values, field_id);
     });
 }
 

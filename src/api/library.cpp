@@ -92,6 +92,12 @@ SFA_EXPORT const sfa_api *sfa_get_api(uint32_t abi_version)
         sfa_get_component_count,
         sfa_get_components,
         sfa_measure_component,
+        sfa_set_velocities_checked,
+        sfa_add_field_checked,
+        sfa_set_size_field,
+        sfa_set_size_field_checked,
+        sfa_set_fixed_vertices,
+        sfa_set_required_edges,
     };
     return abi_version == 1 ? &table_v1 : nullptr;
 }

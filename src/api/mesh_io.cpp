@@ -31,9 +31,13 @@ SFA_EXPORT int sfa_set_mesh(sfa_surface *s, int32_t nverts, const double *xyz, i
         std::swap(s->components, components);
         s->has_mesh = true;
         s->index_base = index_base;
+        s->counts_set_by = "sfa_set_mesh";
         s->mean_edge_length_at_set = mean_edge_length;
         s->velocity.clear();
         s->fields.clear();
+        s->size_field.clear();
+        s->face_fields.clear();
+        s->constraints = Constraints();
         s->near_sheet.clear();
     });
 }

@@ -20,6 +20,23 @@ void require_time_step(double dt)
     }
 }
 
+// For a mesh that is set, `vel` not NULL.
+void set_velocities(sfa_surface *s, const double *vel)
+{
+    std::vector<Vec3> velocity(s->mesh.pos.size());
+    for (size_t v = 0; v < velocity.size(); ++v) {
+        velocity[v] = Vec3(vel[3 * v], vel[3 * v + 1], vel[3 * v + 2]);
+        if (!velocity[v].allFinite()) {
+            char message[160];
+            std::snprintf(message, sizeof message, "vertex %zu has a non-finite velocity (%g, %g, %g)",
+                          v + static_cast<size_t>(s->index_base), velocity[v].x(), velocity[v].y(),
+                          velocity[v].z());
+            fail(Status::numeric, message);
+        }
+    }
+    s->velocity.swap(velocity);
+}
+
 } // namespace
 
 extern "C" {
@@ -29,18 +46,17 @@ SFA_EXPORT int sfa_set_velocities(sfa_surface *s, const double *vel)
     return call(s, "sfa_set_velocities", [&] {
         require(vel != nullptr, "vel is NULL");
         require_mesh(s);
-        std::vector<Vec3> velocity(s->mesh.pos.size());
-        for (size_t v = 0; v < velocity.size(); ++v) {
-            velocity[v] = Vec3(vel[3 * v], vel[3 * v + 1], vel[3 * v + 2]);
-            if (!velocity[v].allFinite()) {
-                char message[160];
-                std::snprintf(message, sizeof message, "vertex %zu has a non-finite velocity (%g, %g, %g)",
-                              v + static_cast<size_t>(s->index_base), velocity[v].x(), velocity[v].y(),
-                              velocity[v].z());
-                fail(Status::numeric, message);
-            }
-        }
-        s->velocity.swap(velocity);
+        set_velocities(s, vel);
+    });
+}
+
+SFA_EXPORT int sfa_set_velocities_checked(sfa_surface *s, int32_t nverts, const double *vel)
+{
+    return call(s, "sfa_set_velocities_checked", [&] {
+        require(vel != nullptr, "vel is NULL");
+        require_mesh(s);
+        require_count(s, "vertices", s->mesh.num_vertices(), nverts);
+        set_velocities(s, vel);
     });
 }
 

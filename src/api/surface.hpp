@@ -5,7 +5,7 @@
 
 #include "adapt/parameters.hpp"
 #include "adapt/phase_times.hpp"
-#include "fields/vertex_fields.hpp"
+#include "adapt/surface_data.hpp"
 #include "geometry/analysis.hpp"
 #include "mesh/components.hpp"
 #include "mesh/tri_mesh.hpp"
@@ -17,10 +17,14 @@ struct sfa_surface {
     sfa::TriMesh mesh;
     bool has_mesh = false;
     int32_t index_base = 0; // the base of the last sfa_set_mesh, used to number vertices in messages
+    const char *counts_set_by = "sfa_set_mesh"; // the last call that changed the counts, for messages
     double mean_edge_length_at_set = 0; // what SFA_PARAM_EDGE_LENGTH = 0 stands for
     sfa::Parameters params;
     std::vector<sfa::Vec3> velocity; // empty until sfa_set_velocities
     std::vector<sfa::VertexField> fields;
+    std::vector<double> size_field;           // per vertex; empty until sfa_set_size_field
+    std::vector<sfa::FaceField> face_fields;
+    sfa::Constraints constraints;             // sfa_set_fixed_vertices, sfa_set_required_edges
     // The components of the current connectivity, numbered and indexed (mesh/components.hpp),
     // which only sfa_set_mesh and sfa_adapt change: each closed one keeps its own volume.
     sfa::Components components;

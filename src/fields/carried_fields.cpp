@@ -62,7 +62,8 @@ void CarriedFields::move(const TriMesh &mesh, const MoveChange &change)
             out[f].values[static_cast<size_t>(out[f].ncomp) * v + c] = value;
         });
     }
-    fields_.swap(out);
+    for (size_t f = 0; f < fields_.size(); ++f)
+        fields_[f].values.swap(out[f].values); // each field's array object stays where it is
 }
 
 void CarriedFields::renumber(const Renumbering &renumbering)

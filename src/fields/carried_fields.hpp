@@ -1,7 +1,9 @@
 // Host fields (one value set per vertex) carried through every change of an edit: a new,
 // merged or moved vertex takes the barycentric interpolation of the old values at its
 // stencil (mesh/stencil.hpp); compaction and renumbering move the values with their
-// vertices. The velocities travel the same way, as one more field.
+// vertices. The velocities travel the same way, as one more field. The fields' value arrays
+// (the std::vector objects) stay where they are, so that a reference to one, such as the
+// size field's (adapt/size_field.hpp), stays valid through every change.
 #pragma once
 
 #include "fields/vertex_fields.hpp"

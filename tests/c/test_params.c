@@ -29,6 +29,8 @@ static double expected_default(int key)
     case SFA_PARAM_ADAPT_PASSES: return 8;
     case SFA_PARAM_CROSSING_GUARD: return 1;
     case SFA_PARAM_VOLUME_CORRECTION: return 1;
+    case SFA_PARAM_SIZE_GRADATION: return 1.5;
+    case SFA_PARAM_SHORT_EDGE_RATIO: return 0.6;
     default: return NAN;
     }
 }
@@ -59,6 +61,8 @@ static double valid_value(int key)
     case SFA_PARAM_ADAPT_PASSES: return 1;
     case SFA_PARAM_CROSSING_GUARD: return 0;
     case SFA_PARAM_VOLUME_CORRECTION: return 0;
+    case SFA_PARAM_SIZE_GRADATION: return 3;
+    case SFA_PARAM_SHORT_EDGE_RATIO: return 0;
     default: return NAN;
     }
 }
@@ -89,6 +93,8 @@ static int invalid_values(int key, double out[4])
     case SFA_PARAM_ADAPT_PASSES: out[0] = 0; out[1] = 2.5; out[2] = 101; return 3;
     case SFA_PARAM_CROSSING_GUARD: out[0] = 0.5; out[1] = 2; out[2] = -1; return 3;
     case SFA_PARAM_VOLUME_CORRECTION: out[0] = 0.5; out[1] = 2; out[2] = -1; return 3;
+    case SFA_PARAM_SIZE_GRADATION: out[0] = 1; out[1] = 0.5; out[2] = -2; return 3;
+    case SFA_PARAM_SHORT_EDGE_RATIO: out[0] = 1; out[1] = -0.1; out[2] = 1.5; return 3;
     default: return 0;
     }
 }
@@ -107,6 +113,8 @@ static documented_range range_of(int key)
     case SFA_PARAM_DROP_UNREFERENCED:
     case SFA_PARAM_CROSSING_GUARD: return (documented_range){0, 1, 1, 1};
     case SFA_PARAM_VOLUME_CORRECTION: return (documented_range){0, 1, 1, 1};
+    case SFA_PARAM_SIZE_GRADATION: return (documented_range){1, INFINITY, 0, 0};
+    case SFA_PARAM_SHORT_EDGE_RATIO: return (documented_range){0, 1, 1, 0};
     case SFA_PARAM_RIDGE_ANGLE:
     case SFA_PARAM_CORNER_ANGLE:
     case SFA_PARAM_METRIC_MIN_ANGLE:

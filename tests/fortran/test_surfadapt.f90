@@ -103,7 +103,9 @@ program test_surfadapt
   real(c_double) :: vel(3, nv), before(3, nv), expected(3, nv), small_xyz(3, 1)
   real(c_double) :: field(2, nv)
   real(c_double), target :: omega
-  real(c_double), allocatable :: xyz_out(:, :), field_out(:, :)
+  real(c_double), allocatable :: xyz_out(:, :), field_out(:, :), sizes(:), stale(:, :)
+  integer(c_int32_t) :: fixed(1), pinned(2, 1)
+  real(c_double) :: fixed_at(3)
   character(len=32) :: want_version
   character(len=:), allocatable :: msg
 
@@ -136,10 +138,10 @@ program test_surfadapt
 
   api = sfa_get_api(int(SFA_HEADER_ABI_VERSION, c_int32_t))
   if (c_associated(api)) then
-    ! The table starts with uint32_t struct_size and abi, then 24 function pointers.
+    ! The table starts with uint32_t struct_size and abi, then 33 function pointers.
     call c_f_pointer(api, api_head, [2])
-    call check('sfa_get_api: struct_size covers the 24 functions', &
-         api_head(1) >= 8 + 24 * c_sizeof(c_null_funptr))
+    call check('sfa_get_api: struct_size covers the 33 functions', &
+         api_head(1) >= 8 + 33 * c_sizeof(c_null_funptr))
     call check('sfa_get_api: abi == SFA_HEADER_ABI_VERSION', api_head(2) == SFA_HEADER_ABI_VERSION)
   else
     call check('sfa_get_api(SFA_HEADER_ABI_VERSION) is not null', .false.)
@@ -362,6 +364,41 @@ program test_surfadapt
   call check('sfa_adapt kept the volume', rc == SFA_OK .and. near(value, volume_before, 1e-9_c_double))
   rc = sfa_get_feature_ranks_alloc(s, ranks)
   call check('the adapted cube has 8 corners', rc == SFA_OK .and. count(ranks == 2) == 8)
+
+  ! ------------------------------------------------------------ host control
+  ! A stale array (made for the 8 vertices before sfa_adapt) is refused by the checked
+  ! variants; a size field coarsens the refined cube while a fixed vertex and a required
+  ! edge (1-based numbering) stay exactly where they are.
+  allocate(stale(3, nv))
+  stale = 0
+  rc = sfa_set_velocities_checked(s, nv, stale)
+  call check('sfa_set_velocities_checked refuses a stale array', rc == SFA_ERR_ARGUMENT, sfa_error_message(s))
+  rc = sfa_get_mesh_alloc(s, xyz_out, tri_out)
+  nverts = size(xyz_out, 2)
+  allocate(sizes(nverts))
+  sizes = 0.6_c_double
+  rc = sfa_set_size_field_checked(s, nverts, sizes)
+  call check('sfa_set_size_field_checked', rc == SFA_OK, sfa_error_message(s))
+  sizes(3) = -1
+  rc = sfa_set_size_field(s, sizes)
+  msg = sfa_error_message(s)
+  call check('sfa_set_size_field refuses a negative size, naming vertex 3', &
+       rc == SFA_ERR_ARGUMENT .and. index(msg, 'vertex 3 ') > 0, msg)
+  fixed(1) = tri_out(1, 5)
+  fixed_at = xyz_out(:, fixed(1))
+  pinned(:, 1) = tri_out(1:2, 9)
+  rc = sfa_set_fixed_vertices(s, 1, fixed, 1)
+  call check('sfa_set_fixed_vertices', rc == SFA_OK, sfa_error_message(s))
+  rc = sfa_set_required_edges(s, 1, pinned, 1)
+  call check('sfa_set_required_edges', rc == SFA_OK, sfa_error_message(s))
+  rc = sfa_adapt(s)
+  call check('sfa_adapt with a size field and constraints', rc == SFA_OK, sfa_error_message(s))
+  rc = sfa_get_mesh_alloc(s, xyz_out, tri_out)
+  call check('the size field coarsened the cube, the fixed vertex in place', rc == SFA_OK .and. &
+       size(xyz_out, 2) < nverts .and. &
+       minval(maxval(abs(xyz_out - spread(fixed_at, 2, size(xyz_out, 2))), dim=1)) <= 0)
+  rc = sfa_clear_size_field(s)
+  call check('sfa_clear_size_field', rc == SFA_OK, sfa_error_message(s))
 
   call sfa_destroy(s)
   s = c_null_ptr

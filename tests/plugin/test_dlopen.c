@@ -132,6 +132,12 @@ int main(int argc, char **argv)
     MEMBER_SET(get_component_count)
     MEMBER_SET(get_components)
     MEMBER_SET(measure_component)
+    MEMBER_SET(set_velocities_checked)
+    MEMBER_SET(add_field_checked)
+    MEMBER_SET(set_size_field)
+    MEMBER_SET(set_size_field_checked)
+    MEMBER_SET(set_fixed_vertices)
+    MEMBER_SET(set_required_edges)
 #undef MEMBER_SET
     if (!check(all_set, "every member of the table is set")) {
         /* Calling through a NULL member would crash instead of reporting. */
@@ -251,6 +257,45 @@ int main(int argc, char **argv)
     api->measure(s, SFA_MEASURE_VOLUME, &volume_after);
     if (!check(fabs(volume_after - volume_before) <= 1e-9, "adapt kept the volume"))
         printf("  %.17g -> %.17g\n", volume_before, volume_after);
+
+    /* Host control through the table: a stale array is refused by the checked variants;
+       a fixed vertex survives a coarsening with a size field, bit for bit. */
+    check(api->set_velocities_checked(s, 8, vel) == SFA_ERR_ARGUMENT, "set_velocities_checked refuses a stale array");
+    double *sizes = malloc(sizeof(double) * (size_t)(nv > 0 ? nv : 1));
+    double *before_xyz = malloc(sizeof(double) * 3 * (size_t)(nv > 0 ? nv : 1));
+    int32_t *before_tris = malloc(sizeof(int32_t) * 3 * (size_t)(nt > 0 ? nt : 1));
+    if (sizes && before_xyz && before_tris && api->get_mesh(s, nv, before_xyz, nt, before_tris, 0) == SFA_OK) {
+        for (int32_t i = 0; i < nv; i++)
+            sizes[i] = 0.6;
+        int32_t field_id = -1;
+        check(api->add_field_checked(s, nv, 1, sizes, &field_id) == SFA_OK, "add_field_checked");
+        check(api->set_size_field_checked(s, nv, sizes) == SFA_OK, "set_size_field_checked");
+        const int32_t fixed[1] = {before_tris[0]};
+        const int32_t edge[2] = {before_tris[0], before_tris[1]};
+        check(api->set_fixed_vertices(s, 1, fixed, 0) == SFA_OK, "set_fixed_vertices");
+        const int32_t not_an_edge[2] = {before_tris[0], before_tris[0]};
+        check(api->set_required_edges(s, 1, not_an_edge, 0) == SFA_ERR_ARGUMENT, "set_required_edges refuses a loop");
+        check(api->set_required_edges(s, 1, edge, 0) == SFA_OK, "set_required_edges");
+        rc = api->adapt(s);
+        if (!check(rc == SFA_OK, "adapt with a size field and constraints"))
+            printf("  status %d: %s\n", rc, api->last_error(s));
+        int32_t nv2 = 0, nt2 = 0;
+        api->get_counts(s, &nv2, &nt2);
+        double *after_xyz = malloc(sizeof(double) * 3 * (size_t)(nv2 > 0 ? nv2 : 1));
+        int32_t *after_tris = malloc(sizeof(int32_t) * 3 * (size_t)(nt2 > 0 ? nt2 : 1));
+        int kept = 0;
+        if (after_xyz && after_tris && api->get_mesh(s, nv2, after_xyz, nt2, after_tris, 0) == SFA_OK)
+            for (int32_t i = 0; i < nv2; i++)
+                kept += memcmp(after_xyz + 3 * i, before_xyz + 3 * fixed[0], 3 * sizeof(double)) == 0;
+        if (!check(nv2 < nv && kept == 1, "coarsened to the size field, the fixed vertex in place"))
+            printf("  %d -> %d vertices, fixed vertex found %d times\n", nv, nv2, kept);
+        check(api->set_size_field(s, NULL) == SFA_OK, "set_size_field(NULL) clears");
+        free(after_xyz);
+        free(after_tris);
+    }
+    free(sizes);
+    free(before_xyz);
+    free(before_tris);
 
     api->destroy(s);
     check(1, "destroy");

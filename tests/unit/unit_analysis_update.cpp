@@ -60,7 +60,8 @@ void each_pass_leaves_the_analysis_a_full_one_would_give(void **)
         TrackedAnalysis tracked(geometry, mesh);
         edit.attach(features);
         edit.attach(tracked);
-        const PassContext context{edit, features, nullptr};
+        const CarriedConstraints no_constraints;
+        const PassContext context{edit, features, nullptr, no_constraints, nullptr};
         const RepairSettings repair = repair_settings(parameters, length);
 
         splits += splitting_pass(context, geometry, repair);

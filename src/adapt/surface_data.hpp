@@ -1,0 +1,28 @@
+// What the host keeps on the surface besides its geometry, in the form smoothing and
+// adaptation carry it: vertex fields (the velocities among them) and the size field are
+// interpolated (fields/carried_fields.hpp), face fields remapped by overlap
+// (fields/face_values.hpp), the constraints kept (adapt/constraints.hpp).
+#pragma once
+
+#include "adapt/constraints.hpp"
+#include "fields/vertex_fields.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace sfa {
+
+// ncomp densities per unit area per triangle: values[ncomp * t + c].
+struct FaceField {
+    int32_t ncomp;
+    std::vector<double> values;
+};
+
+struct SurfaceData {
+    std::vector<VertexField> fields;    // the host's vertex fields, and the velocities if set
+    std::vector<double> size;           // the desired edge length per vertex; empty: the global l
+    std::vector<FaceField> face_fields; // the host's
+    Constraints constraints;            // fixed vertices, required edges
+};
+
+} // namespace sfa
