@@ -26,8 +26,8 @@ constexpr int recent_size = 16;
 // w0 and w1 clamped into the triangle (NaN counts as 0) and completed with
 // w2 = 1 - (w0 + w1), so that all three are in [0, 1] and w0 + w1 + w2, added left to
 // right, is exactly 1: for s = w0 + w1 (rounded) in [0, 1], s + (1 - s) rounds to 1 (the
-// difference is exact for s >= 1/2, and off by at most a quarter of 1's spacing below it),
-// and clamping w1 to 1 - w0 keeps s <= 1.
+// difference is exact for s >= 1/2, and below that off by at most 2^-54, which the sum
+// rounds away), and clamping w1 to 1 - w0 keeps s <= 1.
 Eigen::Vector3d summing_to_one(double w0, double w1)
 {
     w0 = w0 > 0 ? (w0 < 1 ? w0 : 1) : 0;
@@ -86,11 +86,16 @@ Placement place(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &x)
             return out;
         }
     }
-    // Outside (or degenerate): the closest point is on an edge. All three are tried: beyond
-    // an obtuse corner the nearest edge need not be the one the coordinates point across.
-    closer_on_edge(a, b, 0, 1, x, out);
-    closer_on_edge(b, c, 1, 2, x, out);
-    closer_on_edge(c, a, 2, 0, x, out);
+    // Outside: the closest point is on an edge whose line has x on its far side (a
+    // negative coordinate opposite): where it is a corner, x is beyond one of the corner's
+    // two edges at least. A degenerate triangle: any edge.
+    const Eigen::Vector3d &w = out.projected;
+    if (!(w[2] >= 0))
+        closer_on_edge(a, b, 0, 1, x, out);
+    if (!(w[0] >= 0))
+        closer_on_edge(b, c, 1, 2, x, out);
+    if (!(w[1] >= 0))
+        closer_on_edge(c, a, 2, 0, x, out);
     return out;
 }
 

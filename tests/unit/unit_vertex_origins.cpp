@@ -3,8 +3,9 @@
 // OriginHints attached, every vertex of a flat plane is reproduced by its origin over the
 // mesh as it was (to 1e-12), from a hint a few triangles away; on a sphere a linear
 // function carried by the origins is off by O(h^2) (a quarter when h halves); a vertex that
-// stayed where it was is its old corner, exactly; and the walk is bounded (far points,
-// convex corners, facing sheets, a walk longer than its bound).
+// stayed where it was is its old corner, exactly; on one triangle the origin is the
+// closest point; and the walk is bounded (far points, convex corners, facing sheets, a
+// walk longer than its bound).
 #include "fields/vertex_origins.hpp"
 #include "mesh/invariants.hpp"
 #include "mesh/validate.hpp"
@@ -43,6 +44,23 @@ Vec3 point_of(const TriMesh &mesh, const std::vector<Vec3> &positions, const Ver
 double distance_to(const TriMesh &before, const VertexOrigin &o, const Vec3 &x)
 {
     return (point_of(before, before.pos, o) - x).norm();
+}
+
+// The distance from x to the triangle (a, b, c), found as simply as possible: to the
+// projection onto the plane if that is inside, else to the nearest of the three edges.
+double distance_to_triangle(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &x)
+{
+    const Eigen::Vector3d w = barycentric(x, a, b, c);
+    if (w.minCoeff() >= 0)
+        return (x - (w[0] * a + w[1] * b + w[2] * c)).norm();
+    const Vec3 *corners[4] = {&a, &b, &c, &a};
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 &p = *corners[k], &q = *corners[k + 1];
+        const double t = std::clamp((x - p).dot(q - p) / (q - p).squaredNorm(), 0.0, 1.0);
+        nearest = std::min(nearest, (x - (p + t * (q - p))).norm());
+    }
+    return nearest;
 }
 
 // A valid origin: a triangle of the mesh as it was, weights in [0, 1] adding up to 1
@@ -326,8 +344,8 @@ LinearError linear_error_on_a_sphere(int k, uint64_t seed)
         // over two triangles (across an edge that is nearly flat, or a little concave
         // where the jitter made it so), the walk stops at the first it reaches.
         double nearest = std::numeric_limits<double>::infinity();
-        for (int32_t t = 0; t < before.num_triangles(); ++t)
-            nearest = std::min(nearest, distance_to(before, locate_origin(before, before.pos, t, mesh.pos[v], 1), mesh.pos[v]));
+        for (const Triangle &t : before.tri)
+            nearest = std::min(nearest, distance_to_triangle(before.pos[t[0]], before.pos[t[1]], before.pos[t[2]], mesh.pos[v]));
         const double found = distance_to(before, o, mesh.pos[v]);
         if (found > 1.001 * nearest + 1e-12)
             fail_msg("icosphere %d, vertex %d: origin %g away, the nearest triangle %g", k, v, found, nearest);
@@ -396,6 +414,28 @@ void a_vertex_that_stayed_is_its_old_corner_exactly(void **)
         assert_true(stayed > 30);
     }
     mesh_free(&sphere);
+}
+
+// On one triangle, the origin is x's closest point (the walk's choice of the nearest
+// triangle rests on it): random points about random triangles, obtuse ones among them.
+void the_origin_on_one_triangle_is_the_closest_point(void **)
+{
+    shapes_rng rng = rng_seed(17);
+    const auto random_point = [&](double scale) -> Vec3 {
+        return scale * Vec3(rng_uniform(&rng) - 0.5, rng_uniform(&rng) - 0.5, rng_uniform(&rng) - 0.5);
+    };
+    for (int trial = 0; trial < 2000; ++trial) {
+        TriMesh one;
+        one.pos = {random_point(1), random_point(1), random_point(1)};
+        if (trial % 2)
+            one.pos[2] = (one.pos[0] + one.pos[1]) / 2 + random_point(0.1); // obtuse, often very
+        one.tri = {{0, 1, 2}};
+        build_adjacency(one);
+        const Vec3 x = random_point(3);
+        const VertexOrigin o = locate_origin(one, one.pos, 0, x);
+        assert_valid(one, o);
+        assert_float_equal(distance_to(one, o, x), distance_to_triangle(one.pos[0], one.pos[1], one.pos[2], x), 1e-12);
+    }
 }
 
 void the_walk_is_bounded(void **)
@@ -473,6 +513,7 @@ int main(void)
         cmocka_unit_test(a_flat_plane_is_reproduced_through_every_change),
         cmocka_unit_test(a_linear_function_on_a_sphere_is_carried_to_second_order),
         cmocka_unit_test(a_vertex_that_stayed_is_its_old_corner_exactly),
+        cmocka_unit_test(the_origin_on_one_triangle_is_the_closest_point),
         cmocka_unit_test(the_walk_is_bounded),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
