@@ -668,6 +668,72 @@ int sfa_set_fixed_vertices(sfa_surface *s, int32_t count, const int32_t *vertice
  */
 int sfa_set_required_edges(sfa_surface *s, int32_t count, const int32_t *edges, int32_t index_base);
 
+/**
+ * Attaches densities to the triangles: `ncomp` values per triangle, each a density per
+ * unit area (host units), e.g. a surfactant concentration or a surface charge.
+ * sfa_smooth() and sfa_adapt() keep the integral of each component over each connected
+ * component of the surface exactly (to round-off): every change of the mesh remaps the
+ * densities of the faces it replaces onto the new faces by their overlap, in a plane
+ * chart of the change's own fan, so that a constant density stays nearly constant (it
+ * absorbs the small change of a curved fan's area) and a varying one is smeared no more
+ * than the remap must. Motion (sfa_move(), sfa_advect()) leaves the densities as they are
+ * (a stretched triangle keeps its density, not its integral). Face field ids are their
+ * own sequence, apart from sfa_add_field()'s; fields are dropped by sfa_set_mesh().
+ * @warning `values` is taken to hold `ncomp*ntris` values for the current triangle count,
+ * which sfa_adapt() changes: prefer sfa_add_face_field_checked().
+ * @param s        the surface.
+ * @param ncomp    components per triangle, >= 1.
+ * @param values   `ncomp*ntris` densities, `values[ncomp*t+c]` (read only, not kept); finite.
+ * @param field_id receives the id: 0 for the first face field of a mesh, then 1, 2, ...
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, ncomp < 1), ::SFA_ERR_STATE (no mesh),
+ *         ::SFA_ERR_NUMERIC (a non-finite value; names the triangle), ::SFA_ERR_MEMORY.
+ */
+int sfa_add_face_field(sfa_surface *s, int32_t ncomp, const double *values, int32_t *field_id);
+
+/**
+ * sfa_add_face_field() for an array made for `ntris` triangles: ::SFA_ERR_ARGUMENT when
+ * the mesh has another number of triangles.
+ */
+int sfa_add_face_field_checked(sfa_surface *s, int32_t ntris, int32_t ncomp, const double *values,
+                               int32_t *field_id);
+
+/**
+ * Copies a face field's densities on the current triangles out.
+ * @param s        the surface.
+ * @param field_id an id from sfa_add_face_field().
+ * @param capacity number of doubles `values` has room for, >= ncomp*ntris.
+ * @param values   receives `ncomp*ntris` densities (owned by the caller).
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, unknown id, capacity too small:
+ *         nothing written), ::SFA_ERR_STATE (no mesh).
+ */
+int sfa_get_face_field(const sfa_surface *s, int32_t field_id, int32_t capacity, double *values);
+
+/**
+ * Where each current vertex came from: the triangle of the mesh as it was just before the
+ * last sfa_smooth() or sfa_adapt() call (in that mesh's numbering, as sfa_get_mesh() gave
+ * it then) over which the vertex lay right after the call, and its barycentric
+ * coordinates there. With it a host or a coupling library carries data of its own through
+ * the call: the value at vertex i is the sum over k of `barycentric[3*i+k]` times the
+ * old value at corner k of `triangle[i]`. The coordinates are those of the vertex's
+ * closest point on that triangle: exact where the old surface was flat (the position is
+ * reproduced to round-off), first order where it was curved. Each triangle is found by a
+ * short walk over the old mesh from a triangle the call followed the vertex to, so the
+ * answer costs a few triangles per vertex, paid only when asked. Later motion does not
+ * change the answer (it is about the vertex's place right after the call); the old mesh
+ * is kept for it until the next such call or sfa_set_mesh().
+ * @param s           the surface.
+ * @param capacity    number of vertices the outputs have room for, >= nverts.
+ * @param triangle    receives `nverts` triangle indices of the old mesh, from `index_base`.
+ * @param barycentric receives `3*nverts` coordinates, each in [0, 1], the three of a vertex
+ *                    adding up to 1.
+ * @param index_base  0 or 1, the base of the triangle indices written.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, capacity too small, bad index_base:
+ *         nothing written), ::SFA_ERR_STATE (no mesh, or no sfa_smooth() or sfa_adapt()
+ *         since the mesh was set), ::SFA_ERR_MEMORY.
+ */
+int sfa_get_vertex_origins(const sfa_surface *s, int32_t capacity, int32_t *triangle, double *barycentric,
+                           int32_t index_base);
+
 /* ------------------------------------------------------------- components */
 
 /**
@@ -798,6 +864,14 @@ typedef struct sfa_api {
                               int32_t index_base);            /**< sfa_set_fixed_vertices() */
     int (*set_required_edges)(sfa_surface *s, int32_t count, const int32_t *edges,
                               int32_t index_base);            /**< sfa_set_required_edges() */
+    int (*add_face_field)(sfa_surface *s, int32_t ncomp, const double *values,
+                          int32_t *field_id);                 /**< sfa_add_face_field() */
+    int (*add_face_field_checked)(sfa_surface *s, int32_t ntris, int32_t ncomp, const double *values,
+                                  int32_t *field_id);         /**< sfa_add_face_field_checked() */
+    int (*get_face_field)(const sfa_surface *s, int32_t field_id, int32_t capacity,
+                          double *values);                    /**< sfa_get_face_field() */
+    int (*get_vertex_origins)(const sfa_surface *s, int32_t capacity, int32_t *triangle, double *barycentric,
+                              int32_t index_base);            /**< sfa_get_vertex_origins() */
 } sfa_api;
 
 /**

@@ -91,6 +91,8 @@ module surfadapt
   public :: sfa_set_velocities_checked, sfa_add_field_checked
   public :: sfa_set_size_field, sfa_set_size_field_checked, sfa_clear_size_field
   public :: sfa_set_fixed_vertices, sfa_set_required_edges
+  public :: sfa_add_face_field, sfa_add_face_field_checked, sfa_get_face_field
+  public :: sfa_get_vertex_origins
   public :: sfa_get_vertex_frames, sfa_get_ridge_edges
   public :: sfa_get_api
 
@@ -352,6 +354,48 @@ module surfadapt
       integer(c_int32_t), value :: index_base
       integer(c_int) :: sfa_set_required_edges
     end function sfa_set_required_edges
+
+    !> Densities per unit area on the triangles, values(ncomp, ntris); the integral of each
+    !> component over each surface component is kept by sfa_smooth and sfa_adapt.
+    function sfa_add_face_field(s, ncomp, values, field_id) bind(C, name='sfa_add_face_field')
+      import :: c_int, c_int32_t, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: ncomp
+      real(c_double), intent(in) :: values(*)
+      integer(c_int32_t), intent(out) :: field_id
+      integer(c_int) :: sfa_add_face_field
+    end function sfa_add_face_field
+
+    function sfa_add_face_field_checked(s, ntris, ncomp, values, field_id) &
+         bind(C, name='sfa_add_face_field_checked')
+      import :: c_int, c_int32_t, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: ntris, ncomp
+      real(c_double), intent(in) :: values(*)
+      integer(c_int32_t), intent(out) :: field_id
+      integer(c_int) :: sfa_add_face_field_checked
+    end function sfa_add_face_field_checked
+
+    function sfa_get_face_field(s, field_id, capacity, values) bind(C, name='sfa_get_face_field')
+      import :: c_int, c_int32_t, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: field_id, capacity
+      real(c_double), intent(out) :: values(*)
+      integer(c_int) :: sfa_get_face_field
+    end function sfa_get_face_field
+
+    !> For each vertex, the triangle of the mesh before the last sfa_smooth/sfa_adapt it lay
+    !> over (triangle(nverts), from index_base) and its coordinates there (barycentric(3, nverts)).
+    function sfa_get_vertex_origins(s, capacity, triangle, barycentric, index_base) &
+         bind(C, name='sfa_get_vertex_origins')
+      import :: c_int, c_int32_t, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: capacity
+      integer(c_int32_t), intent(out) :: triangle(*)
+      real(c_double), intent(out) :: barycentric(*)
+      integer(c_int32_t), value :: index_base
+      integer(c_int) :: sfa_get_vertex_origins
+    end function sfa_get_vertex_origins
 
     function sfa_get_field(s, field_id, capacity, values) bind(C, name='sfa_get_field')
       import :: c_int, c_int32_t, c_double, c_ptr

@@ -1,5 +1,6 @@
 #include "adapt/adapt.hpp"
 
+#include "adapt/carried_face_fields.hpp"
 #include "adapt/carried_features.hpp"
 #include "adapt/contract.hpp"
 #include "adapt/flip.hpp"
@@ -8,6 +9,7 @@
 #include "adapt/split.hpp"
 #include "adapt/volume.hpp"
 #include "fields/carried_fields.hpp"
+#include "fields/vertex_origins.hpp"
 #include "geometry/guard_listener.hpp"
 #include "geometry/tracked_analysis.hpp"
 #include "mesh/vertex_labels.hpp"
@@ -20,17 +22,18 @@ constexpr double settled_fraction = 1e-2;
 // One sfa_adapt call: the edit, and everything attached to it that follows its changes.
 class Adaptation {
 public:
-    // `size`: the graded desired length of every vertex, the last of `fields` (or null).
-    Adaptation(TriMesh &mesh, std::vector<VertexField> &fields, const std::vector<double> *size,
-               const Constraints &constraints, const AdaptSettings &settings, SurfaceAnalysis &workspace,
-               const Components &components, PhaseTimes &seconds)
+    // `size`: the graded desired length of every vertex, the last of data.fields (or null).
+    Adaptation(TriMesh &mesh, SurfaceData &data, const std::vector<double> *size, const AdaptSettings &settings,
+               SurfaceAnalysis &workspace, const Components &components, PhaseTimes &seconds)
         : mesh_(mesh), settings_(settings), seconds_(seconds), geometry_(workspace), edit_(mesh),
-          carried_fields_(fields), size_(size), constraints_(mesh, constraints), features_(detected_features()),
-          tracked_(geometry_, mesh), guard_listener_(guard_), closed_(components.closed),
-          component_of_(components.of_vertex), volumes_(component_volumes(mesh, components.of_vertex, components.count))
+          carried_fields_(data.fields), face_fields_(edit_, data.face_fields), origins_(mesh), size_(size),
+          constraints_(mesh, data.constraints), features_(detected_features()), tracked_(geometry_, mesh),
+          guard_listener_(guard_), closed_(components.closed), component_of_(components.of_vertex),
+          volumes_(component_volumes(mesh, components.of_vertex, components.count))
     {
         edit_.attach(carried_fields_);
-        if (!constraints.empty())
+        edit_.attach(origins_);
+        if (!data.constraints.empty())
             edit_.attach(constraints_);
         edit_.attach(features_);
         edit_.attach(tracked_);
@@ -49,6 +52,8 @@ public:
     // Each closed component's enclosed volume back and, if the connectivity changed, the
     // locality order; the vertices the guard watched, numbered as the mesh is now.
     std::vector<char> finish(AdaptCounts &counts);
+    // A triangle of the mesh the call found near each vertex (vertex_origins.hpp).
+    const std::vector<int32_t> &origin_hints() const { return origins_.hints(); }
     // What the host pinned, numbered as the mesh is now.
     Constraints constraints() const { return constraints_.as_host(mesh_); }
     // The components of the mesh as it is now, numbered and indexed.
@@ -97,6 +102,8 @@ private:
     SurfaceAnalysis &geometry_;
     MeshEdit edit_;
     CarriedFields carried_fields_;
+    CarriedFaceFields face_fields_;
+    OriginHints origins_;
     const std::vector<double> *size_;
     CarriedConstraints constraints_; // before features_, which it shapes
     CarriedFeatures features_;
@@ -174,7 +181,7 @@ AdaptCounts adapt_surface(TriMesh &mesh, SurfaceData &data, const AdaptSettings 
     if (sized)
         data.fields.push_back({1, graded_sizes(mesh, std::move(data.size), settings.size_gradation)});
     const std::vector<double> *size = sized ? &data.fields.back().values : nullptr;
-    Adaptation adaptation(mesh, data.fields, size, data.constraints, settings, workspace, components, counts.seconds);
+    Adaptation adaptation(mesh, data, size, settings, workspace, components, counts.seconds);
     while (counts.passes < settings.max_passes) {
         // Settled: after the first pass or two, the changes of a pass dwindle to a few edges
         // in a thousand (on a dynamic surface, the second pass of a call changes about 0.5 %
@@ -186,6 +193,7 @@ AdaptCounts adapt_surface(TriMesh &mesh, SurfaceData &data, const AdaptSettings 
     }
     near_sheet = adaptation.finish(counts);
     components = adaptation.components();
+    data.origin_hints = adaptation.origin_hints();
     if (!data.constraints.empty())
         data.constraints = adaptation.constraints();
     if (sized) {

@@ -1,5 +1,6 @@
 #include "adapt/smooth_surface.hpp"
 
+#include "adapt/carried_face_fields.hpp"
 #include "adapt/smooth.hpp"
 #include "adapt/volume.hpp"
 #include "fields/carried_fields.hpp"
@@ -27,6 +28,7 @@ SmoothResult smooth_surface(TriMesh &mesh, SurfaceData &data, const SmoothSettin
     MeshEdit edit(mesh);
     CarriedFields carried_fields(data.fields);
     edit.attach(carried_fields);
+    const CarriedFaceFields face_fields(edit, data.face_fields); // remapped by overlap
     const CarriedConstraints constraints(mesh, data.constraints); // nothing changes them here
     SurfaceAnalysis &analysis = workspace;
     for (int32_t sweep = 0; sweep < sweeps; ++sweep) {

@@ -17,7 +17,7 @@ namespace {
 // it: the velocities travel as the last vertex field.
 SurfaceData carried_data(const sfa_surface *s)
 {
-    SurfaceData data{s->fields, s->size_field, s->face_fields, s->constraints};
+    SurfaceData data{s->fields, s->size_field, s->face_fields, s->constraints, {}};
     if (!s->velocity.empty()) {
         VertexField velocity{3, std::vector<double>(3 * s->velocity.size())};
         for (size_t v = 0; v < s->velocity.size(); ++v)
@@ -61,17 +61,26 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
         // connectivity is not copied, a step of a flow calls this on every step), and on a
         // copy of the host's data; if anything fails, the positions go back.
         TriMesh &mesh = s->mesh;
-        const std::vector<Vec3> saved_positions = mesh.pos;
+        std::vector<Vec3> saved_positions = mesh.pos;
         SurfaceData data = carried_data(s);
         SmoothResult result;
+        std::vector<Vec3> after;
         try {
             result = smooth_surface(mesh, data, settings, iterations, s->near_sheet, s->analysis_workspace,
                                     s->components);
+            after = mesh.pos;
             commit(s, data);
         } catch (...) {
             std::copy(saved_positions.begin(), saved_positions.end(), mesh.pos.begin()); // same size: no allocation
             throw;
         }
+        // The origins: the connectivity is the handle's, the positions were saved.
+        s->origins.valid = true;
+        s->origins.same_connectivity = true;
+        s->origins.before = TriMesh(); // only its positions: the handle's mesh has the rest
+        s->origins.before.pos.swap(saved_positions);
+        s->origins.hints.clear();
+        s->origins.after.swap(after);
         s->seconds_spent += result.seconds;
         s->volume_correction = result.volume_correction;
     });
@@ -93,8 +102,15 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
         if (!broken.empty())
             fail(Status::internal, ("the adapted mesh is broken (" + broken + "); the surface is unchanged").c_str());
 
+        std::vector<Vec3> after = mesh.pos;
         commit(s, data);
+        // The mesh as it was stays, for the origins.
+        std::swap(s->origins.before, s->mesh);
         s->mesh = std::move(mesh);
+        s->origins.valid = true;
+        s->origins.same_connectivity = false;
+        s->origins.hints.swap(data.origin_hints);
+        s->origins.after.swap(after);
         s->counts_set_by = "sfa_adapt";
         s->near_sheet.swap(near_sheet);
         std::swap(s->components, components);

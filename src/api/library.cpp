@@ -98,6 +98,10 @@ SFA_EXPORT const sfa_api *sfa_get_api(uint32_t abi_version)
         sfa_set_size_field_checked,
         sfa_set_fixed_vertices,
         sfa_set_required_edges,
+        sfa_add_face_field,
+        sfa_add_face_field_checked,
+        sfa_get_face_field,
+        sfa_get_vertex_origins,
     };
     return abi_version == 1 ? &table_v1 : nullptr;
 }

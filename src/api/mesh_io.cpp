@@ -38,6 +38,7 @@ SFA_EXPORT int sfa_set_mesh(sfa_surface *s, int32_t nverts, const double *xyz, i
         s->size_field.clear();
         s->face_fields.clear();
         s->constraints = Constraints();
+        s->origins = OriginsRecord();
         s->near_sheet.clear();
     });
 }

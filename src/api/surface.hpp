@@ -13,6 +13,22 @@
 #include <cstdint>
 #include <vector>
 
+namespace sfa {
+
+// What sfa_get_vertex_origins needs from the last successful sfa_smooth or sfa_adapt call
+// (fields/vertex_origins.hpp); the origins are found only when asked. The mesh as it was
+// is kept whole after sfa_adapt (it would have been freed: keeping it costs memory, not
+// time); after sfa_smooth, which keeps the connectivity, only its positions.
+struct OriginsRecord {
+    bool valid = false;          // false until such a call, and after sfa_set_mesh
+    bool same_connectivity = false; // sfa_smooth: the handle's mesh has the connectivity of `before`
+    TriMesh before;              // sfa_adapt: the mesh as it was (its positions after sfa_smooth)
+    std::vector<int32_t> hints;  // sfa_adapt: one per vertex (sfa_smooth: from the mesh)
+    std::vector<Vec3> after;     // the positions right after the call
+};
+
+} // namespace sfa
+
 struct sfa_surface {
     sfa::TriMesh mesh;
     bool has_mesh = false;
@@ -28,6 +44,7 @@ struct sfa_surface {
     // The components of the current connectivity, numbered and indexed (mesh/components.hpp),
     // which only sfa_set_mesh and sfa_adapt change: each closed one keeps its own volume.
     sfa::Components components;
+    sfa::OriginsRecord origins;
     sfa::PhaseTimes seconds_spent; // by the successful sfa_smooth and sfa_adapt calls
     double volume_correction = 0;  // SFA_MEASURE_VOLUME_CORRECTION of the last of them
     // The vertices near a facing sheet (geometry/crossing_guard.hpp) as the last sfa_adapt

@@ -35,6 +35,8 @@ public:
     int32_t components() const { return ncomp_; }
     double value(int32_t t, int32_t c) const { return values_[static_cast<size_t>(ncomp_) * t + c]; }
     const std::vector<double> &values() const { return values_; }
+    // The values, moved out (the listener is done with).
+    std::vector<double> take_values() { return std::move(values_); }
     // How many remaps of a fan fell back to sharing by area (RemapPath::shared).
     int64_t shared_remaps() const { return shared_remaps_; }
 

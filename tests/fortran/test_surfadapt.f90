@@ -105,6 +105,8 @@ program test_surfadapt
   real(c_double), target :: omega
   real(c_double), allocatable :: xyz_out(:, :), field_out(:, :), sizes(:), stale(:, :)
   integer(c_int32_t) :: fixed(1), pinned(2, 1)
+  integer(c_int32_t), allocatable :: origin_tri(:)
+  real(c_double), allocatable :: origin_w(:, :), densities(:)
   real(c_double) :: fixed_at(3)
   character(len=32) :: want_version
   character(len=:), allocatable :: msg
@@ -138,10 +140,10 @@ program test_surfadapt
 
   api = sfa_get_api(int(SFA_HEADER_ABI_VERSION, c_int32_t))
   if (c_associated(api)) then
-    ! The table starts with uint32_t struct_size and abi, then 33 function pointers.
+    ! The table starts with uint32_t struct_size and abi, then 37 function pointers.
     call c_f_pointer(api, api_head, [2])
-    call check('sfa_get_api: struct_size covers the 33 functions', &
-         api_head(1) >= 8 + 33 * c_sizeof(c_null_funptr))
+    call check('sfa_get_api: struct_size covers the 37 functions', &
+         api_head(1) >= 8 + 37 * c_sizeof(c_null_funptr))
     call check('sfa_get_api: abi == SFA_HEADER_ABI_VERSION', api_head(2) == SFA_HEADER_ABI_VERSION)
   else
     call check('sfa_get_api(SFA_HEADER_ABI_VERSION) is not null', .false.)
@@ -399,6 +401,21 @@ program test_surfadapt
        minval(maxval(abs(xyz_out - spread(fixed_at, 2, size(xyz_out, 2))), dim=1)) <= 0)
   rc = sfa_clear_size_field(s)
   call check('sfa_clear_size_field', rc == SFA_OK, sfa_error_message(s))
+  ! Where each vertex came from: a triangle of the mesh before that sfa_adapt (1-based),
+  ! and barycentric coordinates adding up to 1.
+  allocate(origin_tri(size(xyz_out, 2)), origin_w(3, size(xyz_out, 2)))
+  rc = sfa_get_vertex_origins(s, size(xyz_out, 2), origin_tri, origin_w, 1)
+  call check('sfa_get_vertex_origins', rc == SFA_OK .and. minval(origin_tri) >= 1 .and. &
+       maxval(abs(sum(origin_w, dim=1) - 1)) < 1e-14_c_double, sfa_error_message(s))
+  ! A face field of one density per triangle comes back as it was set (no call since).
+  allocate(densities(size(tri_out, 2)))
+  densities = 0.5_c_double
+  rc = sfa_add_face_field_checked(s, size(tri_out, 2), 1, densities, field_id)
+  call check('sfa_add_face_field_checked', rc == SFA_OK .and. field_id == 0, sfa_error_message(s))
+  densities = 0
+  rc = sfa_get_face_field(s, field_id, size(densities), densities)
+  call check('sfa_get_face_field', rc == SFA_OK .and. minval(densities) >= 0.5_c_double &
+       .and. maxval(densities) <= 0.5_c_double, sfa_error_message(s))
 
   call sfa_destroy(s)
   s = c_null_ptr

@@ -138,6 +138,10 @@ int main(int argc, char **argv)
     MEMBER_SET(set_size_field_checked)
     MEMBER_SET(set_fixed_vertices)
     MEMBER_SET(set_required_edges)
+    MEMBER_SET(add_face_field)
+    MEMBER_SET(add_face_field_checked)
+    MEMBER_SET(get_face_field)
+    MEMBER_SET(get_vertex_origins)
 #undef MEMBER_SET
     if (!check(all_set, "every member of the table is set")) {
         /* Calling through a NULL member would crash instead of reporting. */
@@ -290,6 +294,24 @@ int main(int argc, char **argv)
         if (!check(nv2 < nv && kept == 1, "coarsened to the size field, the fixed vertex in place"))
             printf("  %d -> %d vertices, fixed vertex found %d times\n", nv, nv2, kept);
         check(api->set_size_field(s, NULL) == SFA_OK, "set_size_field(NULL) clears");
+        /* Every vertex's origin is a triangle of the mesh before the call. */
+        int32_t *origin = malloc(sizeof(int32_t) * (size_t)(nv2 > 0 ? nv2 : 1));
+        double *weights = malloc(sizeof(double) * 3 * (size_t)(nv2 > 0 ? nv2 : 1));
+        int origins_ok = origin && weights && api->get_vertex_origins(s, nv2, origin, weights, 0) == SFA_OK;
+        for (int32_t i = 0; origins_ok && i < nv2; i++)
+            origins_ok = origin[i] >= 0 && origin[i] < nt;
+        check(origins_ok, "get_vertex_origins names a triangle of the mesh before sfa_adapt for every vertex");
+        free(origin);
+        free(weights);
+        double *density = malloc(sizeof(double) * (size_t)(nt2 > 0 ? nt2 : 1));
+        for (int32_t i = 0; density && i < nt2; i++)
+            density[i] = 1.5;
+        int32_t face_id = -1;
+        check(density && api->add_face_field_checked(s, nt2, 1, density, &face_id) == SFA_OK && face_id == 0,
+              "add_face_field_checked");
+        check(density && api->add_face_field(s, 1, density, &face_id) == SFA_OK && face_id == 1, "add_face_field");
+        check(density && api->get_face_field(s, 0, nt2, density) == SFA_OK && density[0] == 1.5, "get_face_field");
+        free(density);
         free(after_xyz);
         free(after_tris);
     }
