@@ -65,6 +65,7 @@ SAN_TESTS        := $(patsubst build/tests/%,build/san/tests/%,$(C_TESTS))
 ALLOC_HOOK_OBJ   := build/tests/c/alloc_hook/alloc_hook.o
 FORTRAN_TEST     := build/tests/test_fortran
 FORTRAN_EXAMPLE  := build/examples/vortex_host
+C_EXAMPLE        := build/examples/coupler_host
 PLUGIN_TEST      := build/tests/test_plugin
 # C benchmarks use the public API; C++ ones (bench/*.cpp) time internal steps.
 # bench/fidelity is a tool for the flows' checkpoints (bench_flows.sh runs it), not a case.
@@ -169,6 +170,11 @@ $(FORTRAN_EXAMPLE): bindings/fortran/examples/vortex_host.f90 $(FLIB_A) $(FMOD) 
 	@mkdir -p $(@D)
 	$(FC) $(FFLAGS) -Ilib/fortran -J $(@D) -o $@ $< $(FLIB_A) -Llib -lsurfadapt -Wl,-rpath,'$$ORIGIN/../../lib'
 
+# The C example host (a coupler carrying its data through sfa_adapt), built the same way.
+$(C_EXAMPLE): examples/coupler_host.c $(LIB_SO) $(LIB_DEV)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -o $@ $< -Llib -lsurfadapt -lm -Wl,-rpath,'$$ORIGIN/../../lib'
+
 $(PLUGIN_TEST): tests/plugin/test_dlopen.c | deps
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -o $@ $< -ldl
@@ -181,8 +187,8 @@ $(PLUGIN_TEST): tests/plugin/test_dlopen.c | deps
 test: deps-check $(UNIT_TESTS) $(C_TESTS)
 	@OMP_WAIT_POLICY=$${OMP_WAIT_POLICY:-passive} scripts/run-tests.sh $(UNIT_TESTS) $(C_TESTS)
 
-check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE) $(PLUGIN_TEST) $(FIDELITY) $(SAN_TESTS)
-	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) "$(FORTRAN_EXAMPLE) 60" \
+check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE) $(C_EXAMPLE) $(PLUGIN_TEST) $(FIDELITY) $(SAN_TESTS)
+	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) "$(FORTRAN_EXAMPLE) 60" $(C_EXAMPLE) \
 	  "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" \
 	  tests/install/test_install.sh tests/cli/test_features_cli.sh tests/cli/test_remesh_cli.sh tests/cli/test_flows_cli.sh \
 	  tests/cli/test_fidelity.sh $(SAN_TESTS)

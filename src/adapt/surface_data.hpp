@@ -13,11 +13,9 @@
 
 namespace sfa {
 
-// ncomp densities per unit area per triangle: values[ncomp * t + c].
-struct FaceField {
-    int32_t ncomp;
-    std::vector<double> values;
-};
+// ncomp densities per unit area per triangle, values[ncomp * t + c]: the shape of a vertex
+// field, on the triangles.
+using FaceField = VertexField;
 
 struct SurfaceData {
     std::vector<VertexField> fields;    // the host's vertex fields, and the velocities if set

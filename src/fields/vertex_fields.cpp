@@ -7,14 +7,15 @@
 
 namespace sfa {
 
-VertexField checked_field(int32_t ncomp, const double *values, int32_t num_vertices, int32_t index_base)
+VertexField checked_field(int32_t ncomp, const double *values, int32_t num_elements, int32_t index_base,
+                          const char *element)
 {
-    const size_t count = static_cast<size_t>(ncomp) * static_cast<size_t>(num_vertices);
+    const size_t count = static_cast<size_t>(ncomp) * static_cast<size_t>(num_elements);
     for (size_t i = 0; i < count; ++i) {
         if (!std::isfinite(values[i])) {
             char message[160];
-            std::snprintf(message, sizeof message, "vertex %zu has a non-finite value %g in component %zu of the field",
-                          i / static_cast<size_t>(ncomp) + static_cast<size_t>(index_base), values[i],
+            std::snprintf(message, sizeof message, "%s %zu has a non-finite value %g in component %zu of the field",
+                          element, i / static_cast<size_t>(ncomp) + static_cast<size_t>(index_base), values[i],
                           i % static_cast<size_t>(ncomp));
             throw Error(Status::numeric, message);
         }

@@ -12,9 +12,10 @@ struct VertexField {
     std::vector<double> values; // values[ncomp * v + c]
 };
 
-// Copies a host's field after checking every value is finite; throws
-// Error(Status::numeric) naming the first vertex with a non-finite value, counted from
-// index_base.
-VertexField checked_field(int32_t ncomp, const double *values, int32_t num_vertices, int32_t index_base);
+// Copies a host's field of ncomp values per element (vertex, or triangle for a face field)
+// after checking every value is finite; throws Error(Status::numeric) naming the first
+// element with a non-finite value ("vertex 12"), counted from index_base.
+VertexField checked_field(int32_t ncomp, const double *values, int32_t num_elements, int32_t index_base,
+                          const char *element = "vertex");
 
 } // namespace sfa

@@ -51,7 +51,7 @@ program vortex_host
       call vortex_velocity(xyz, t, vel)
       midpoint = xyz + 0.5_c_double * remaining * vel
       call vortex_velocity(midpoint, t + 0.5_c_double * remaining, vel)
-      call require(sfa_set_velocities(s, vel), 'sfa_set_velocities')
+      call require(sfa_set_velocities_checked(s, int(size(vel, 2), c_int32_t), vel), 'sfa_set_velocities_checked')
       call require(sfa_move(s, remaining, taken), 'sfa_move')
       t = t + taken
       remaining = remaining - taken
