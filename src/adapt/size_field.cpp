@@ -18,7 +18,8 @@ std::vector<double> graded_sizes(const TriMesh &mesh, std::vector<double> size, 
     // only when a size is lowered, at most once per edge direction: the loop is bounded by
     // the number of vertices plus twice the number of edges.
     while (!queue.empty()) {
-        const auto [l, v] = queue.top();
+        const double l = queue.top().first; // not a structured binding: a lambda captures these
+        const int32_t v = queue.top().second;
         queue.pop();
         if (settled[v] || l > size[v])
             continue;
