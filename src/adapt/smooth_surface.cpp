@@ -42,8 +42,8 @@ SmoothResult smooth_surface(TriMesh &mesh, SurfaceData &data, const SmoothSettin
         edit.move(moved);
         result.volume_correction =
             std::max(result.volume_correction,
-                     restore_enclosed_volumes(edit, analysis.features.rank, settings.crossing_guard ? &guard : nullptr, components.of_vertex,
-                                              volumes, components.closed, settings.volume_correction));
+                     restore_enclosed_volumes(edit, analysis.features.rank, components.of_vertex, volumes,
+                                              components.closed, settings.volume_correction));
     }
     if (sized) {
         data.size.swap(data.fields.back().values);

@@ -46,22 +46,21 @@ std::vector<double> component_volumes(const TriMesh &mesh, const std::vector<int
     return volume;
 }
 
-namespace {
-
-// The offset positions of every vertex with a non-zero normal (its component's offset
-// along it); each component's offset into `offset`, and the largest relative volume change
-// of a closed component before any offset into `largest_change` (if not null).
-std::vector<Vec3> offset_positions(const TriMesh &mesh, const std::vector<Vec3> &normal,
-                                   const std::vector<int32_t> &label, const std::vector<double> &volume,
-                                   const std::vector<char> &closed, std::vector<double> &offset,
-                                   double *largest_change)
+double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank, const std::vector<int32_t> &label,
+                                const std::vector<double> &volume, const std::vector<char> &closed, bool correct)
 {
-    // Every moving vertex moves by its component's offset o along its unit volume gradient
+    // Every smooth vertex moves by its component's offset o along its unit volume gradient
     // n_v; the six-fold volume of a component is then the cubic sum over its triangles of
     // det(p_0 + o n_0, p_1 + o n_1, p_2 + o n_2). One pass gathers the four coefficients of
     // every component, and Newton's method on each cubic finds its offset to round-off
     // without touching the mesh again.
+    const TriMesh &mesh = edit.mesh();
     const int32_t n = mesh.num_vertices(), count = static_cast<int32_t>(volume.size());
+    std::vector<Vec3> normal(n, Vec3::Zero());
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t v = 0; v < n; ++v)
+        if (rank[v] == 0 && closed[label[v]])
+            normal[v] = volume_gradient(mesh, v).normalized();
     const std::vector<Eigen::Vector4d> coefficients = ordered_group_sums(
         mesh.num_triangles(), count, Eigen::Vector4d::Zero().eval(), [&](int32_t t) { return label[mesh.tri[t][0]]; },
         [&](int32_t k) {
@@ -71,92 +70,22 @@ std::vector<Vec3> offset_positions(const TriMesh &mesh, const std::vector<Vec3> 
             return Eigen::Vector4d(det(p0, p1, p2), det(n0, p1, p2) + det(p0, n1, p2) + det(p0, p1, n2),
                                    det(p0, n1, n2) + det(n0, p1, n2) + det(n0, n1, p2), det(n0, n1, n2));
         });
-    offset.assign(count, 0);
+    double largest_change = 0;
+    std::vector<double> offset(count, 0);
     for (int32_t c = 0; c < count; ++c) {
         if (!closed[c])
             continue;
         const Eigen::Vector4d &k = coefficients[c];
-        if (largest_change)
-            *largest_change = std::max(*largest_change, std::abs(6 * volume[c] - k[0]) / std::abs(6 * volume[c]));
-        if (k[1] > 0) // else nothing can move: every vertex is a feature
+        largest_change = std::max(largest_change, std::abs(6 * volume[c] - k[0]) / std::abs(6 * volume[c]));
+        if (correct && k[1] > 0) // else nothing can move: every vertex is a feature
             offset[c] = offset_for(k, 6 * volume[c]);
     }
+    if (!correct || std::all_of(offset.begin(), offset.end(), [](double o) { return o == 0; }))
+        return largest_change;
     std::vector<Vec3> moved(n);
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < n; ++v)
         moved[v] = offset[label[v]] != 0 ? Vec3(mesh.pos[v] + offset[label[v]] * normal[v]) : mesh.pos[v];
-    return moved;
-}
-
-// The components of which a watched face would meet another face at `moved`.
-std::vector<char> crossing_components(const TriMesh &mesh, CrossingGuard &guard, const std::vector<Vec3> &moved,
-                                      const std::vector<int32_t> &label, int32_t count)
-{
-    std::vector<char> crossing(count, 0);
-    const std::vector<int32_t> &watched = guard.index_faces(mesh, moved);
-    std::vector<char> crosses(watched.size(), 0);
-#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 256)
-    for (size_t i = 0; i < watched.size(); ++i) {
-        const Triangle &t = mesh.tri[watched[i]];
-        const Vec3 at[3] = {moved[t[0]], moved[t[1]], moved[t[2]]};
-        crosses[i] = moved[t[0]] != mesh.pos[t[0]] || moved[t[1]] != mesh.pos[t[1]] || moved[t[2]] != mesh.pos[t[2]]
-                         ? guard.crosses(mesh, moved, t, at)
-                         : 0;
-    }
-    for (size_t i = 0; i < watched.size(); ++i)
-        if (crosses[i])
-            crossing[label[mesh.tri[watched[i]][0]]] = 1;
-    return crossing;
-}
-
-// Component c as it was: none of its vertices moves.
-void keep(const TriMesh &mesh, const std::vector<int32_t> &label, int32_t c, std::vector<Vec3> &moved)
-{
-    for (int32_t v = 0; v < mesh.num_vertices(); ++v)
-        if (label[v] == c)
-            moved[v] = mesh.pos[v];
-}
-
-} // namespace
-
-double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank, CrossingGuard *guard,
-                                const std::vector<int32_t> &label, const std::vector<double> &volume,
-                                const std::vector<char> &closed, bool correct)
-{
-    const TriMesh &mesh = edit.mesh();
-    const int32_t n = mesh.num_vertices(), count = static_cast<int32_t>(volume.size());
-    std::vector<Vec3> normal(n, Vec3::Zero());
-#pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t v = 0; v < n; ++v)
-        if (rank[v] == 0 && closed[label[v]])
-            normal[v] = volume_gradient(mesh, v).normalized();
-    double largest_change = 0;
-    std::vector<double> offset;
-    std::vector<Vec3> moved = offset_positions(mesh, normal, label, volume, closed, offset, &largest_change);
-    if (!correct)
-        return largest_change;
-    // A component whose offset would carry a watched face through another (an inward
-    // offset closes a sheet thinner than the offset's reach) gets its volume back from the
-    // vertices away from facing sheets, unless they would have to move more than twice as
-    // far (most of the component is near a sheet: a few vertices would stick out); if that
-    // crosses too, or is too far, it keeps its shape until a later call.
-    if (guard) {
-        const std::vector<char> crossing = crossing_components(mesh, *guard, moved, label, count);
-        if (std::any_of(crossing.begin(), crossing.end(), [](char c) { return c != 0; })) {
-            std::vector<Vec3> away = normal;
-            for (int32_t v = 0; v < n; ++v)
-                if (crossing[label[v]] && guard->watches(v))
-                    away[v] = Vec3::Zero();
-            std::vector<double> retried_offset;
-            const std::vector<Vec3> retried = offset_positions(mesh, away, label, volume, closed, retried_offset, nullptr);
-            std::vector<char> refused = crossing_components(mesh, *guard, retried, label, count);
-            for (int32_t c = 0; c < count; ++c)
-                refused[c] = refused[c] || std::abs(retried_offset[c]) > 2 * std::abs(offset[c]);
-            for (int32_t v = 0; v < n; ++v)
-                if (crossing[label[v]])
-                    moved[v] = refused[label[v]] ? mesh.pos[v] : retried[v];
-        }
-    }
     // A component whose offset folds a triangle keeps its shape: each round leaves one more
     // component as it was. A triangle flat before any offset (which no offset unfolds)
     // leaves every component as it was. So there are at most as many rounds as components.
@@ -169,10 +98,11 @@ double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank,
             break;
         }
         kept[c] = 1;
-        keep(mesh, label, c, moved);
+        for (int32_t v = 0; v < n; ++v)
+            if (label[v] == c)
+                moved[v] = mesh.pos[v];
     }
-    if (moved != mesh.pos)
-        edit.offset(moved);
+    edit.offset(moved);
     return largest_change;
 }
 

@@ -1,7 +1,6 @@
 // Keeping the enclosed volume of every closed component (bubble, drop) on its own.
 #pragma once
 
-#include "geometry/crossing_guard.hpp"
 #include "mesh/mesh_edit.hpp"
 
 #include <cstdint>
@@ -20,19 +19,14 @@ std::vector<double> component_volumes(const TriMesh &mesh, const std::vector<int
 // so changes its volume at second order in the edge length (+1.1 % when a coarse model
 // like spot is refined to half its edge length); a uniform offset per component is the
 // smallest change of shape that gives it back, and no volume moves from one component to
-// another. Features do not move. With the crossing guard (null: none), a component whose
-// offset would carry a watched face through another gets its volume from its vertices
-// away from facing sheets instead (an inward offset closes a sheet thinner than an edge:
-// in the vortex flow of T = 6 it made the two sides cross), or if that crosses too, is
-// left as it is. Open components are not corrected. The volume is an
+// another. Features do not move; open components are not corrected. The volume is an
 // exact cubic in the offset, solved by Newton's method, so the result is exact to
 // round-off; a component whose offset would fold a triangle is left as it is. With
 // `correct` false, nothing moves. The vertices move through `edit` (MeshEdit::offset).
 // Returns the largest relative volume change |V - volume[c]| / |volume[c]| of a closed
 // component before the correction: how far the operations themselves came from keeping
 // the volume.
-double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank, CrossingGuard *guard,
-                                const std::vector<int32_t> &label, const std::vector<double> &volume,
-                                const std::vector<char> &closed, bool correct);
+double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank, const std::vector<int32_t> &label,
+                                const std::vector<double> &volume, const std::vector<char> &closed, bool correct);
 
 } // namespace sfa
