@@ -203,7 +203,10 @@ enum sfa_param {
         mesh finer than asked kept a mean edge of about S (0.53 l) instead of l; with this
         criterion the edges settle between it and L = ::SFA_PARAM_SPLIT_LENGTH_RATIO l from
         either side. Measured in metric space it leaves the short edges across a ridge or a
-        tight curve, which the anisotropic metric asks for. 0: the paper's criteria alone.
+        tight curve, which the anisotropic metric asks for; it also leaves edges between two
+        feature vertices (ridge curves keep their vertices) and edges at a vertex near a
+        facing sheet (see ::SFA_PARAM_CROSSING_GUARD), where fewer vertices would let a later
+        step carry one side through the other. 0: the paper's criteria alone.
         A ratio to l, in [0, 1); default 0.6. */
     SFA_PARAM_SHORT_EDGE_RATIO = 23
 };
