@@ -62,8 +62,10 @@ int main(void)
     ok = ok && check(s, sfa_adapt(s), "sfa_adapt");
     int32_t nverts = 0, new_ntris = 0;
     ok = ok && check(s, sfa_get_counts(s, &nverts, &new_ntris), "sfa_get_counts");
-    double *new_xyz = malloc(sizeof(double) * 3 * (size_t)nverts), *weights = malloc(sizeof(double) * 3 * (size_t)nverts);
-    int32_t *new_tris = malloc(sizeof(int32_t) * 3 * (size_t)new_ntris), *origin = malloc(sizeof(int32_t) * (size_t)nverts);
+    double *new_xyz = malloc(sizeof(double) * 3 * (size_t)nverts);
+    double *weights = malloc(sizeof(double) * 3 * (size_t)nverts);
+    int32_t *new_tris = malloc(sizeof(int32_t) * 3 * (size_t)new_ntris);
+    int32_t *origin = malloc(sizeof(int32_t) * (size_t)nverts);
     ok = ok && new_xyz && weights && new_tris && origin;
     ok = ok && check(s, sfa_get_mesh(s, nverts, new_xyz, new_ntris, new_tris, 0), "sfa_get_mesh");
     ok = ok && check(s, sfa_get_vertex_origins(s, nverts, origin, weights, 0), "sfa_get_vertex_origins");

@@ -857,7 +857,8 @@ typedef struct sfa_api {
     int (*get_components)(const sfa_surface *s, int32_t capacity, int32_t *vertex_component); /**< sfa_get_components() */
     int (*measure_component)(const sfa_surface *s, int32_t component, int quantity,
                              double *value);                  /**< sfa_measure_component() */
-    int (*set_velocities_checked)(sfa_surface *s, int32_t nverts, const double *vel); /**< sfa_set_velocities_checked() */
+    int (*set_velocities_checked)(sfa_surface *s, int32_t nverts,
+                                  const double *vel);         /**< sfa_set_velocities_checked() */
     int (*add_field_checked)(sfa_surface *s, int32_t nverts, int32_t ncomp, const double *values,
                              int32_t *field_id);              /**< sfa_add_field_checked() */
     int (*set_size_field)(sfa_surface *s, const double *edge_length); /**< sfa_set_size_field() */

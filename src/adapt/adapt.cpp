@@ -174,13 +174,8 @@ AdaptCounts adapt_surface(TriMesh &mesh, SurfaceData &data, const AdaptSettings 
                           std::vector<char> &near_sheet, SurfaceAnalysis &workspace, Components &components)
 {
     AdaptCounts counts;
-    // The size field travels as one more field, graded first; the grading stays (it only
-    // lowers sizes, and grading a graded field changes nothing).
-    const bool sized = !data.size.empty();
-    if (sized)
-        data.fields.push_back({1, graded_sizes(mesh, std::move(data.size), settings.size_gradation)});
-    const std::vector<double> *size = sized ? &data.fields.back().values : nullptr;
-    Adaptation adaptation(mesh, data, size, settings, workspace, components, counts.seconds);
+    const SizeAsField size(mesh, data, settings.size_gradation);
+    Adaptation adaptation(mesh, data, size.values(), settings, workspace, components, counts.seconds);
     while (counts.passes < settings.max_passes) {
         // Settled: after the first pass or two, the changes of a pass dwindle to a few edges
         // in a thousand (on a dynamic surface, the second pass of a call changes about 0.5 %
@@ -195,10 +190,6 @@ AdaptCounts adapt_surface(TriMesh &mesh, SurfaceData &data, const AdaptSettings 
     data.origin_hints = adaptation.origin_hints();
     if (!data.constraints.empty())
         data.constraints = adaptation.constraints();
-    if (sized) {
-        data.size.swap(data.fields.back().values);
-        data.fields.pop_back();
-    }
     return counts;
 }
 

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "adapt/settings.hpp"
+#include "adapt/surface_data.hpp"
 #include "mesh/tri_mesh.hpp"
 
 #include <vector>
@@ -21,6 +22,37 @@ namespace sfa {
 // shortest path of edges, by Dijkstra's algorithm from every vertex at once (each vertex
 // is settled once: O(n log n)).
 std::vector<double> graded_sizes(const TriMesh &mesh, std::vector<double> size, double gradation);
+
+// For as long as it lives, the size field of `data` (if it has one) travels as the last of
+// data.fields, interpolated like any vertex field; then it is data.size again. With
+// `gradation` > 0 it is graded first (sfa_adapt; the grading stays: it only lowers sizes,
+// and grading a graded field changes nothing); smoothing carries it as it is (0).
+class SizeAsField {
+public:
+    SizeAsField(const TriMesh &mesh, SurfaceData &data, double gradation) : data_(data), sized_(!data.size.empty())
+    {
+        if (sized_)
+            data.fields.push_back(
+                {1, gradation > 0 ? graded_sizes(mesh, std::move(data.size), gradation) : std::move(data.size)});
+    }
+    ~SizeAsField()
+    {
+        if (!sized_)
+            return;
+        data_.size.swap(data_.fields.back().values);
+        data_.fields.pop_back();
+    }
+    SizeAsField(const SizeAsField &) = delete;
+    SizeAsField &operator=(const SizeAsField &) = delete;
+
+    // The desired length of every vertex as the edit carries it, or null without a size
+    // field (a reference that stays valid: carried_fields.hpp).
+    const std::vector<double> *values() const { return sized_ ? &data_.fields.back().values : nullptr; }
+
+private:
+    SurfaceData &data_;
+    const bool sized_;
+};
 
 // The thresholds of `settings` for the desired length l instead of its own: every length
 // scales with l, the ratios and angles stay.

@@ -1,6 +1,7 @@
 #include "adapt/smooth_surface.hpp"
 
 #include "adapt/carried_face_fields.hpp"
+#include "adapt/size_field.hpp"
 #include "adapt/smooth.hpp"
 #include "adapt/volume.hpp"
 #include "fields/carried_fields.hpp"
@@ -22,9 +23,7 @@ SmoothResult smooth_surface(TriMesh &mesh, SurfaceData &data, const SmoothSettin
         guard = timed(seconds.analysis, [&] {
             return CrossingGuard(near_sheet.size() == mesh.pos.size() ? near_sheet : near_facing_sheet(mesh));
         });
-    const bool sized = !data.size.empty();
-    if (sized)
-        data.fields.push_back({1, std::move(data.size)});
+    const SizeAsField size(mesh, data, 0); // interpolated as it is
     MeshEdit edit(mesh);
     CarriedFields carried_fields(data.fields);
     edit.attach(carried_fields);
@@ -44,10 +43,6 @@ SmoothResult smooth_surface(TriMesh &mesh, SurfaceData &data, const SmoothSettin
             std::max(result.volume_correction,
                      restore_enclosed_volumes(edit, analysis.features.rank, components.of_vertex, volumes,
                                               components.closed, settings.volume_correction));
-    }
-    if (sized) {
-        data.size.swap(data.fields.back().values);
-        data.fields.pop_back();
     }
     return result;
 }

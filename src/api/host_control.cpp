@@ -17,8 +17,9 @@ void set_size_field(sfa_surface *s, const double *edge_length)
     for (int32_t v = 0; v < n; ++v)
         if (!(std::isfinite(edge_length[v]) && edge_length[v] > 0)) {
             char message[160];
-            std::snprintf(message, sizeof message, "vertex %d has the desired edge length %g; it must be finite and > 0",
-                          v + s->index_base, edge_length[v]);
+            std::snprintf(message, sizeof message,
+                          "vertex %d has the desired edge length %g; it must be finite and > 0", v + s->index_base,
+                          edge_length[v]);
             fail(Status::argument, message);
         }
     std::vector<double> size(edge_length, edge_length + n);
@@ -101,8 +102,9 @@ SFA_EXPORT int sfa_set_required_edges(sfa_surface *s, int32_t count, const int32
             const int32_t b = vertex_named(s, "edges", 2 * int64_t{i} + 1, edges[2 * i + 1], index_base);
             if (a == b || (s->mesh.halfedge(a, b) < 0 && s->mesh.halfedge(b, a) < 0)) {
                 char message[200];
-                std::snprintf(message, sizeof message, "edge %d, (%d, %d), is not an edge of the mesh (numbered from %d)",
-                              i, edges[2 * i], edges[2 * i + 1], index_base);
+                std::snprintf(message, sizeof message,
+                              "edge %d, (%d, %d), is not an edge of the mesh (numbered from %d)", i, edges[2 * i],
+                              edges[2 * i + 1], index_base);
                 fail(Status::argument, message);
             }
             required[i] = {std::min(a, b), std::max(a, b)};

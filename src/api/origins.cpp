@@ -20,8 +20,8 @@ SFA_EXPORT int sfa_get_vertex_origins(const sfa_surface *s, int32_t capacity, in
         const int32_t n = s->mesh.num_vertices();
         if (capacity < n) {
             char message[120];
-            std::snprintf(message, sizeof message, "capacity too small: the mesh has %d vertices, room was given for %d",
-                          n, capacity);
+            std::snprintf(message, sizeof message,
+                          "capacity too small: the mesh has %d vertices, room was given for %d", n, capacity);
             fail(Status::argument, message);
         }
         const TriMesh &topology = r.same_connectivity ? s->mesh : r.before;
