@@ -144,9 +144,11 @@ $(ALLOC_HOOK_OBJ): tests/c/alloc_hook/alloc_hook.cpp | deps
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -Itests/c -c $< -o $@
 
+# The predicates' test checks them against exact rational arithmetic (GMP, test-only).
+build/tests/unit_predicates: UNIT_LIBS := -lgmpxx -lgmp
 $(UNIT_TESTS): build/tests/%: tests/unit/%.cpp $(LIB_A) $(TEST_SUPPORT_OBJ)
 	@mkdir -p $(@D)
-	$(CXX) $(CXXFLAGS) -Itests/c -Iapps/surfadapt -MMD -MP -o $@ $< $(TEST_SUPPORT_OBJ) $(LIB_A) -lcmocka -lm
+	$(CXX) $(CXXFLAGS) -Itests/c -Iapps/surfadapt -MMD -MP -o $@ $< $(TEST_SUPPORT_OBJ) $(LIB_A) -lcmocka $(UNIT_LIBS) -lm
 
 # The same C tests against the library's objects built with ASan + UBSan (static link),
 # without OpenMP (clang's runtime is another package; the loops then run serially).

@@ -15,6 +15,7 @@ have_header eigen3/Eigen/Core || missing="$missing libeigen3-dev"
 case " $need " in
   *" check "*)
     have_header cmocka.h || missing="$missing libcmocka-dev"
+    have_header gmpxx.h || missing="$missing libgmp-dev"
     have_cmd abidiff || missing="$missing abigail-tools"
     have_cmd clang || missing="$missing clang"
     [ -n "$(ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.asan-x86_64.a 2>/dev/null)" ] ||

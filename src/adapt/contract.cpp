@@ -5,7 +5,7 @@
 #include "geometry/edge_neighbourhood.hpp"
 #include "geometry/local_fit.hpp"
 #include "geometry/quadric_error.hpp"
-#include "geometry/self_intersection.hpp"
+#include "geometry/triangle_intersection.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include "geometry/crossing_guard.hpp"
 
 #include "geometry/quadric.hpp"
-#include "geometry/self_intersection.hpp"
+#include "geometry/triangle_intersection.hpp"
 #include "mesh/parallel.hpp"
 
 #include <algorithm>

@@ -3,7 +3,7 @@
 // clamping of eq. 12.
 #include "geometry/metric.hpp"
 #include "geometry/quadric_error.hpp"
-#include "geometry/self_intersection.hpp"
+#include "geometry/triangle_intersection.hpp"
 
 #include <cmath>
 #include <cstdlib>
