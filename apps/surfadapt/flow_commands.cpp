@@ -29,6 +29,8 @@ bool read_flow_options(int argc, char **argv, int first, FlowRun &run, const cha
             run.isotropic = true;
         else if (!std::strcmp(argv[i], "--no-crossing-guard"))
             run.crossing_guard = false;
+        else if (!std::strcmp(argv[i], "--collision-safe"))
+            run.collision_safe = true;
         else if (!std::strcmp(argv[i], "--no-smoothing"))
             run.smoothing = false;
         else if (!std::strcmp(argv[i], "--no-volume-correction"))

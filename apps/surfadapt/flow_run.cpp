@@ -40,16 +40,18 @@ int run_flow(const FlowRun &run, FlowResult &result)
         sfa_set_param(s, SFA_PARAM_ANISOTROPIC, 0);
     sfa_set_param(s, SFA_PARAM_DENOISE, run.denoise);
     sfa_set_param(s, SFA_PARAM_CROSSING_GUARD, run.crossing_guard ? 1 : 0);
+    sfa_set_param(s, SFA_PARAM_COLLISION_SAFE_MOTION, run.collision_safe ? 1 : 0);
     sfa_set_param(s, SFA_PARAM_VOLUME_CORRECTION, run.volume_correction ? 1 : 0);
     // Adapted every few steps: one pass per call, the next call picks up what it leaves.
     sfa_set_param(s, SFA_PARAM_ADAPT_PASSES, 1);
 
     const double volume0 = measure(s, SFA_MEASURE_VOLUME), area0 = measure(s, SFA_MEASURE_AREA);
     std::printf("%s: sphere of radius %g at (%g, %g, %g), %d vertices; T = %g, dt = %g, %d steps; %s adaptation "
-                "every %d steps, denoising %g, crossing guard %s, volume correction %s\n\n",
+                "every %d steps, denoising %g, crossing guard %s, collision-safe motion %s, volume correction %s\n\n",
                 run.title, run.radius, run.centre[0], run.centre[1], run.centre[2], nverts, run.period, run.dt,
                 run.steps, run.isotropic ? "isotropic" : "anisotropic", run.adapt_every, run.denoise,
-                run.crossing_guard ? "on" : "off", run.volume_correction ? "on" : "off");
+                run.crossing_guard ? "on" : "off", run.collision_safe ? "on" : "off",
+                run.volume_correction ? "on" : "off");
     std::printf("%5s %6s %9s %10s %13s %10s %9s %9s %9s %9s %8s\n", "step", "t", "vertices", "triangles",
                 "volume err %", "area ratio", "min angle", "max angle", "max turn", "crossings", "seconds");
     TimeSeries series(run.out_dir, "surface");

@@ -28,6 +28,7 @@ struct FlowRun {
     bool json = false;    // also print the summary as one JSON line (for benchmarks)
     double denoise = 0;   // SFA_PARAM_DENOISE
     bool crossing_guard = true; // SFA_PARAM_CROSSING_GUARD
+    bool collision_safe = false; // SFA_PARAM_COLLISION_SAFE_MOTION
     bool volume_correction = true; // SFA_PARAM_VOLUME_CORRECTION
     bool smoothing = true;  // false: a step that is not adapted is not smoothed either
 };

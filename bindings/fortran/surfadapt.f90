@@ -61,6 +61,7 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_PARAM_VOLUME_CORRECTION = 21
   integer(c_int), parameter, public :: SFA_PARAM_SIZE_GRADATION = 22
   integer(c_int), parameter, public :: SFA_PARAM_SHORT_EDGE_RATIO = 23
+  integer(c_int), parameter, public :: SFA_PARAM_COLLISION_SAFE_MOTION = 24
 
   ! --------------------------------------------------- enum sfa_measure_quantity
   integer(c_int), parameter, public :: SFA_MEASURE_VOLUME = 0

@@ -32,6 +32,7 @@ enum class Param : int {
     volume_correction,
     size_gradation,
     short_edge_ratio,
+    collision_safe_motion,
     count
 };
 

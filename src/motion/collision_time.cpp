@@ -1,0 +1,222 @@
+#include "motion/collision_time.hpp"
+
+#include "geometry/spatial_grid.hpp"
+#include "mesh/parallel.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace sfa {
+namespace {
+
+// The six corners of a pair, positions and velocities.
+struct PairMotion {
+    Vec3 x[6], v[6];
+};
+
+// The time the pair may move while a plane of normal n, moving along n with the mean
+// speed of the six corners, stays between them, each triangle's corners taking at most a
+// quarter of the gap (the plane moving, a sheet carried along as a whole is not held
+// back); 0 if n does not separate them at the start (beyond round-off). `gap` and
+// `closing` are set when it does.
+double time_across(const PairMotion &m, const Vec3 &n, double &gap, double &closing)
+{
+    double p[6], w[6], scale = 0, plane_speed = 0;
+    for (int k = 0; k < 6; ++k) {
+        p[k] = n.dot(m.x[k]);
+        w[k] = n.dot(m.v[k]);
+        plane_speed += w[k] / 6;
+        scale = std::max(scale, n.cwiseAbs().dot(m.x[k].cwiseAbs()));
+    }
+    const double lo_a = std::min({p[0], p[1], p[2]}), hi_a = std::max({p[0], p[1], p[2]});
+    const double lo_b = std::min({p[3], p[4], p[5]}), hi_b = std::max({p[3], p[4], p[5]});
+    // Each projection is within a few roundings of n.x; a gap not well above them is no proof.
+    const double roundoff = 8 * 0x1p-53 * scale;
+    int lower; // 0: a below b along n, 1: b below a
+    if (hi_a + roundoff < lo_b) {
+        lower = 0;
+        gap = lo_b - hi_a;
+    } else if (hi_b + roundoff < lo_a) {
+        lower = 1;
+        gap = lo_a - hi_b;
+    } else {
+        return 0;
+    }
+    // Relative to the plane, the lower triangle may rise to `top` and the upper fall to `bottom`.
+    const double top = (lower == 0 ? hi_a : hi_b) + gap / 4, bottom = (lower == 0 ? lo_b : lo_a) - gap / 4;
+    double time = std::numeric_limits<double>::infinity(), rise = 0, fall = 0;
+    for (int k = 0; k < 6; ++k) {
+        const double relative = w[k] - plane_speed;
+        const bool below = (k < 3) == (lower == 0);
+        if (below && relative > 0) {
+            time = std::min(time, (top - p[k]) / relative);
+            rise = std::max(rise, relative);
+        } else if (!below && relative < 0) {
+            time = std::min(time, (bottom - p[k]) / relative);
+            fall = std::max(fall, -relative);
+        }
+    }
+    const double length = n.norm();
+    gap /= length;
+    closing = (rise + fall) / length;
+    return time;
+}
+
+// How long the pair may move: the longest of the times its separating planes allow, or
+// some time beyond `limit` once one plane allows that much.
+Approach pair_approach(const PairMotion &m, double limit)
+{
+    Approach best;
+    best.time = 0;
+    const auto consider = [&](const Vec3 &n) {
+        if (best.time > limit || n == Vec3::Zero())
+            return;
+        double gap = 0, closing = 0;
+        const double time = time_across(m, n, gap, closing);
+        if (time > best.time) {
+            best.time = time;
+            best.gap = gap;
+            best.closing = closing;
+        }
+    };
+    Vec3 edge_a[3], edge_b[3];
+    for (int k = 0; k < 3; ++k) {
+        edge_a[k] = m.x[(k + 1) % 3] - m.x[k];
+        edge_b[k] = m.x[3 + (k + 1) % 3] - m.x[3 + k];
+    }
+    // The face normals first: for two sheets facing each other they are the best planes.
+    const Vec3 normal_a = edge_a[0].cross(edge_a[1]), normal_b = edge_b[0].cross(edge_b[1]);
+    consider(normal_a);
+    consider(normal_b);
+    // Side by side in one sheet, nearly coplanar, the two are apart across the sheet: the
+    // planes through an edge square to its face, and the one through the line of centres.
+    for (int k = 0; k < 3; ++k) {
+        consider(normal_a.cross(edge_a[k]));
+        consider(normal_b.cross(edge_b[k]));
+    }
+    consider(m.x[3] + m.x[4] + m.x[5] - m.x[0] - m.x[1] - m.x[2]);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            consider(edge_a[i].cross(edge_b[j]));
+    return best;
+}
+
+// A triangle as a ball moving with its mean velocity: every point of it is within
+// `radius` of the centre and moves within `spread` of the mean velocity.
+struct Reach {
+    Vec3 centre, velocity;
+    double radius, spread;
+};
+
+Reach reach_of(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &va, const Vec3 &vb, const Vec3 &vc)
+{
+    Reach r;
+    r.centre = (a + b + c) / 3;
+    r.velocity = (va + vb + vc) / 3;
+    r.radius = std::sqrt(std::max({(a - r.centre).squaredNorm(), (b - r.centre).squaredNorm(),
+                                   (c - r.centre).squaredNorm()}));
+    r.spread = std::sqrt(std::max({(va - r.velocity).squaredNorm(), (vb - r.velocity).squaredNorm(),
+                                   (vc - r.velocity).squaredNorm()}));
+    return r;
+}
+
+// True if the two cannot meet within dt: the gap between their balls is more than their
+// points' relative motion can close (the ball of each moves with its mean velocity, and
+// each point within its spread of it). A margin of a millionth covers the rounding.
+bool out_of_reach(const Reach &s, const Reach &t, double dt)
+{
+    const double gap = (s.centre - t.centre).norm() - s.radius - t.radius;
+    const double reach = dt * ((s.velocity - t.velocity).norm() + s.spread + t.spread);
+    return gap > (1 + 1e-6) * reach + 1e-12 * (s.radius + t.radius);
+}
+
+bool earlier(const Approach &a, const Approach &b)
+{
+    if (a.time != b.time)
+        return a.time < b.time;
+    return a.first != b.first ? a.first < b.first : a.second < b.second;
+}
+
+} // namespace
+
+Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt)
+{
+    Approach first;
+    first.time = dt;
+    const int32_t n = mesh.num_triangles();
+    if (n < 2)
+        return first;
+    // The box each triangle sweeps over the step, and cells of about the size of the
+    // boxes, so that each box covers a few cells and a cell holds few boxes.
+    using Box = std::array<Vec3, 2>;
+    std::vector<Box> swept(static_cast<size_t>(n));
+    std::vector<Reach> reach(static_cast<size_t>(n));
+    double extent = 0;
+#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(+ : extent)
+    for (int32_t t = 0; t < n; ++t) {
+        const Triangle &c = mesh.tri[t];
+        Vec3 lo = mesh.pos[c[0]], hi = lo;
+        for (int32_t v : c)
+            for (const Vec3 &x : {mesh.pos[v], Vec3(mesh.pos[v] + dt * velocity[v])}) {
+                lo = lo.cwiseMin(x);
+                hi = hi.cwiseMax(x);
+            }
+        swept[t] = {lo, hi};
+        extent += (hi - lo).maxCoeff();
+        reach[t] = reach_of(mesh.pos[c[0]], mesh.pos[c[1]], mesh.pos[c[2]], velocity[c[0]], velocity[c[1]],
+                            velocity[c[2]]);
+    }
+    Vec3 lowest = swept[0][0];
+    for (const Box &b : swept)
+        lowest = lowest.cwiseMin(b[0]);
+    const double cell = extent / n;
+    if (!(cell > 0))
+        return first;
+    SpatialGrid<int32_t> grid;
+    grid.build(CellFrame{lowest, cell}, n, [&](int32_t t) { return swept[t]; },
+               [](int32_t t, const GridCell &) { return t; });
+
+    std::vector<Approach> per_thread(static_cast<size_t>(loop_threads()), first);
+    const int64_t buckets = static_cast<int64_t>(grid.bucket_count());
+#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 64)
+    for (int64_t b = 0; b < buckets; ++b) {
+        Approach &mine = per_thread[static_cast<size_t>(thread_index())];
+        grid.for_each_pair_in_bucket(static_cast<size_t>(b), [&](int32_t s, int32_t t, uint64_t here) {
+            if (cell_key(first_shared_cell(grid.cells_of(s)[0], grid.cells_of(t)[0])) != here)
+                return; // each pair once
+            const Triangle &p = mesh.tri[s], &q = mesh.tri[t];
+            for (int32_t v : p)
+                if (v == q[0] || v == q[1] || v == q[2])
+                    return; // neighbours: the fold control's concern
+            const Box &box_s = swept[s], &box_t = swept[t];
+            if ((box_s[0] - box_t[1]).maxCoeff() > 0 || (box_t[0] - box_s[1]).maxCoeff() > 0)
+                return; // apart over the whole step
+            if (out_of_reach(reach[s], reach[t], dt))
+                return; // too far apart for how differently they move: most neighbours in a sheet
+            PairMotion m;
+            for (int k = 0; k < 3; ++k) {
+                m.x[k] = mesh.pos[p[k]];
+                m.v[k] = velocity[p[k]];
+                m.x[3 + k] = mesh.pos[q[k]];
+                m.v[3 + k] = velocity[q[k]];
+            }
+            Approach pair = pair_approach(m, mine.time);
+            if (pair.time == 0)
+                return; // they meet or touch already: no plane separates them
+            pair.first = s;
+            pair.second = t;
+            for (int k = 0; k < 3; ++k)
+                pair.size = std::max({pair.size, (m.x[(k + 1) % 3] - m.x[k]).norm(),
+                                      (m.x[3 + (k + 1) % 3] - m.x[3 + k]).norm()});
+            if (earlier(pair, mine))
+                mine = pair;
+        });
+    }
+    for (const Approach &a : per_thread)
+        if (earlier(a, first))
+            first = a;
+    return first;
+}
+
+} // namespace sfa

@@ -1,0 +1,38 @@
+// Collision-safe motion: how long every vertex may move along x + t v before two triangles
+// that share no vertex could meet. Conservative by construction: a pair is let move only
+// as long as a plane that separates the two triangles at the start, moving along its
+// normal at one speed, still separates them; a triangle, the hull of its corners, stays on
+// its side of a plane exactly as long as its corners do, which under linear motion is a
+// linear condition in t. This is the separating-plane certificate of conservative
+// advancement. The plane is the one that lets the pair move longest among the
+// separating-axis theorem's candidates for two triangles (the two face normals and the
+// nine cross products of their edges), the planes square to a face through one of its
+// edges (two triangles side by side in one sheet), and the plane square to the line of
+// their centres.
+#pragma once
+
+#include "mesh/tri_mesh.hpp"
+
+#include <limits>
+#include <vector>
+
+namespace sfa {
+
+// The pair of triangles that limits a step.
+struct Approach {
+    double time = std::numeric_limits<double>::infinity(); // how long the pair may move
+    int32_t first = -1, second = -1;                        // the two triangles, 0-based
+    double gap = 0;     // their separation, along the plane's normal, at the start
+    double closing = 0; // the speed at which that separation shrinks (the corners' fastest)
+    double size = 0;    // the longest edge of the two
+};
+
+// The largest t <= dt (and the pair that sets it, if t < dt) for which no two triangles
+// that share no vertex come closer than half their start separation across the plane
+// that certifies them apart: each may take a quarter of the gap. Pairs that already meet
+// or touch at the start have no such plane and are not limited. The pairs are found by
+// their swept boxes over [0, dt] in a uniform grid; the result does not depend on the
+// number of threads.
+Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt);
+
+} // namespace sfa

@@ -1,0 +1,163 @@
+/* Collision-safe motion (SFA_PARAM_COLLISION_SAFE_MOTION): two drops driven into each other
+ * by the host are stopped apart, or the call fails cleanly, and the surface never passes
+ * through itself; without it they pass through each other. The same through sfa_advect. */
+#include "support/testing.h"
+
+/* Two spheres of radius 0.2 whose centres are 0.46 apart on the x axis (a gap of 0.06). */
+static sfa_surface *two_drops(void)
+{
+    sfa_mesh_data m = shape_icosphere(3, 0.2);
+    sfa_mesh_data right = shape_icosphere(3, 0.2);
+    const double left_shift[3] = {-0.23, 0, 0}, right_shift[3] = {0.23, 0, 0};
+    mesh_translate(&m, left_shift);
+    mesh_translate(&right, right_shift);
+    mesh_append(&m, &right);
+    mesh_free(&right);
+    sfa_surface *s = make_surface(&m, 1);
+    mesh_free(&m);
+    return s;
+}
+
+/* Each drop's vertices at speed 0.25 toward the other. */
+static double *toward_each_other(const sfa_surface *s, int32_t *nverts)
+{
+    sfa_mesh_data m = read_back(s);
+    *nverts = m.nverts;
+    double *vel = malloc(sizeof(double) * 3 * (size_t)m.nverts);
+    for (int32_t v = 0; v < m.nverts; ++v) {
+        vel[3 * v] = m.xyz[3 * v] < 0 ? 0.25 : -0.25;
+        vel[3 * v + 1] = vel[3 * v + 2] = 0;
+    }
+    mesh_free(&m);
+    return vel;
+}
+
+static double self_intersections(const sfa_surface *s)
+{
+    double count = -1;
+    assert_ok(s, sfa_measure(s, SFA_MEASURE_SELF_INTERSECTIONS, &count));
+    return count;
+}
+
+/* Moves the drops toward each other for up to 80 calls of dt = 0.01, adapting at l = 0.03
+ * after each: returns the number of calls made before one failed (80 if none did), and the
+ * largest self-intersection count seen after any call. */
+static int drive_together(sfa_surface *s, int adapt, double *worst_crossings)
+{
+    *worst_crossings = 0;
+    for (int call = 0; call < 80; ++call) {
+        int32_t n = 0;
+        double *vel = toward_each_other(s, &n), dt_taken = 0;
+        assert_ok(s, sfa_set_velocities_checked(s, n, vel));
+        free(vel);
+        snapshot before, after;
+        snapshot_take(s, &before);
+        const int rc = sfa_move(s, 0.01, &dt_taken);
+        if (rc != SFA_OK) {
+            /* A clean failure: the status, a message naming the pair, nothing changed. */
+            assert_error(s, rc, SFA_ERR_NUMERIC, "triangles", "apart", "closing");
+            print_message("stopped after %d calls: %s\n", call, sfa_last_error(s));
+            snapshot_take(s, &after);
+            assert_same_snapshot(&before, &after);
+            snapshot_free(&before);
+            snapshot_free(&after);
+            return call;
+        }
+        snapshot_free(&before);
+        if (adapt)
+            assert_ok(s, sfa_adapt(s));
+        *worst_crossings = fmax(*worst_crossings, self_intersections(s));
+    }
+    return 80;
+}
+
+static void drops_driven_together_never_cross(void **state)
+{
+    (void)state;
+    sfa_surface *s = two_drops();
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, 0.03));
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_COLLISION_SAFE_MOTION, 1));
+    assert_ok(s, sfa_adapt(s));
+    double crossings = 0;
+    const int calls = drive_together(s, 1, &crossings);
+    assert_true(calls < 80); /* they keep closing, so the motion must stop them */
+    assert_true(crossings == 0);
+    int32_t count = 0;
+    assert_ok(s, sfa_get_component_count(s, &count));
+    assert_int_equal(count, 2);
+    sfa_destroy(s);
+}
+
+/* The control: the same drive without the check passes one drop through the other. */
+static void without_the_check_the_drops_pass_through_each_other(void **state)
+{
+    (void)state;
+    sfa_surface *s = two_drops();
+    double crossings = 0;
+    const int calls = drive_together(s, 0, &crossings);
+    assert_int_equal(calls, 80);
+    print_message("without the check: up to %.0f crossing pairs\n", crossings);
+    assert_true(crossings > 0);
+    sfa_destroy(s);
+}
+
+/* Without adaptation, every step is cut by the check alone: the gap closes by at most half
+ * per call, and the call that cannot advance fails before the drops touch. */
+static void the_gap_halves_at_most_per_call(void **state)
+{
+    (void)state;
+    sfa_surface *s = two_drops();
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_COLLISION_SAFE_MOTION, 1));
+    double crossings = 0;
+    const int calls = drive_together(s, 0, &crossings);
+    /* 0.06 apart, closing at 0.5: 0.12 of time, 12 full steps, then halvings down to a
+     * millionth of an edge (about 0.1 long): some twenty more. */
+    assert_true(calls >= 12 && calls < 80);
+    assert_true(crossings == 0);
+    sfa_destroy(s);
+}
+
+/* sfa_advect with a field that drives the drops together (the first half of the vertices
+ * is the left drop): the same guarantee. */
+static void toward_each_other_by_index(void *ctx, int32_t n, const double *xyz, double t, double *vel)
+{
+    (void)ctx;
+    (void)xyz;
+    (void)t;
+    for (int32_t v = 0; v < n; ++v) {
+        vel[3 * v] = v < n / 2 ? 0.25 : -0.25;
+        vel[3 * v + 1] = vel[3 * v + 2] = 0;
+    }
+}
+
+static void advected_drops_never_cross(void **state)
+{
+    (void)state;
+    sfa_surface *s = two_drops();
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_COLLISION_SAFE_MOTION, 1));
+    double t = 0;
+    for (int call = 0; call < 80; ++call) {
+        double dt_taken = 0;
+        const int rc = sfa_advect(s, toward_each_other_by_index, NULL, t, 0.01, &dt_taken);
+        if (rc != SFA_OK) {
+            assert_error(s, rc, SFA_ERR_NUMERIC, "triangles", "closing");
+            print_message("advection stopped at t = %.9f (contact at 0.12): %s\n", t, sfa_last_error(s));
+            break;
+        }
+        t += dt_taken;
+        assert_true(self_intersections(s) == 0);
+    }
+    assert_true(t < 0.12 && t > 0.119);
+    sfa_destroy(s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(drops_driven_together_never_cross),
+        cmocka_unit_test(without_the_check_the_drops_pass_through_each_other),
+        cmocka_unit_test(the_gap_halves_at_most_per_call),
+        cmocka_unit_test(advected_drops_never_cross),
+    };
+    return cmocka_run_group_tests_name("test_collision_safe_motion", tests, NULL, NULL);
+}

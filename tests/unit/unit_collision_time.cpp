@@ -1,0 +1,162 @@
+// Unit tests of the collision-safe step (first_approach): on random pairs of triangles
+// with random velocities no pair meets at any time of the step it allows (checked with
+// the exact triangle test at many times), the step is not needlessly short where the
+// answer is known (two parallel plates closing: a quarter of the gap per triangle), pairs
+// that share a vertex or already meet are not limited, and the result is the same for
+// any number of threads.
+#include "geometry/triangle_intersection.hpp"
+#include "mesh/parallel.hpp"
+#include "motion/collision_time.hpp"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstddef>
+#include <cstdint>
+#include <setjmp.h>
+
+extern "C" {
+#include <cmocka.h>
+}
+
+using namespace sfa;
+
+namespace {
+
+struct Numbers { // SplitMix64: the same sequence on every machine
+    uint64_t state;
+    double uniform(double lo, double hi)
+    {
+        uint64_t z = (state += 0x9E3779B97F4A7C15u);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+        z ^= z >> 31;
+        return lo + (hi - lo) * static_cast<double>(z >> 11) * 0x1p-53;
+    }
+    Vec3 point(double r) { return Vec3(uniform(-r, r), uniform(-r, r), uniform(-r, r)); }
+};
+
+TriMesh two_triangles(const Vec3 (&x)[6])
+{
+    TriMesh mesh;
+    mesh.pos.assign(x, x + 6);
+    mesh.tri = {Triangle{0, 1, 2}, Triangle{3, 4, 5}};
+    return mesh;
+}
+
+bool meet_at(const TriMesh &mesh, const std::vector<Vec3> &v, double t)
+{
+    Vec3 x[6];
+    for (int k = 0; k < 6; ++k)
+        x[k] = mesh.pos[k] + t * v[k];
+    return triangles_intersect(x[0], x[1], x[2], x[3], x[4], x[5]);
+}
+
+void random_pairs_never_meet_within_the_allowed_step(void **)
+{
+    Numbers rng{7};
+    int limited = 0, checked = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        Vec3 x[6];
+        for (int k = 0; k < 3; ++k) {
+            x[k] = rng.point(1);
+            x[3 + k] = rng.point(1) + Vec3(rng.uniform(0, 1.5), 0, 0);
+        }
+        const TriMesh mesh = two_triangles(x);
+        if (triangles_intersect(x[0], x[1], x[2], x[3], x[4], x[5]))
+            continue;
+        std::vector<Vec3> v(6);
+        for (Vec3 &w : v)
+            w = rng.point(2);
+        const double dt = 1;
+        const Approach a = first_approach(mesh, v, dt);
+        assert_true(a.time > 0 && a.time <= dt);
+        limited += a.time < dt;
+        for (int s = 0; s <= 64; ++s) {
+            if (meet_at(mesh, v, a.time * s / 64))
+                fail_msg("trial %d: the pair meets at t = %g within the allowed %g", trial, a.time * s / 64, a.time);
+            ++checked;
+        }
+    }
+    print_message("%d steps limited, %d times checked\n", limited, checked);
+    assert_true(limited > 5000);
+}
+
+// Two parallel unit plates 0.1 apart: one still, the other closing at speed 1. The plane
+// between them moves at their mean speed, and each may take a quarter of the gap toward
+// it: the gap halves, in 0.05.
+void closing_plates_may_take_a_quarter_of_their_gap(void **)
+{
+    const Vec3 x[6] = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
+                       Vec3(0, 0, 0.1), Vec3(0, 1, 0.1), Vec3(1, 0, 0.1)};
+    const TriMesh mesh = two_triangles(x);
+    std::vector<Vec3> v(6, Vec3::Zero());
+    for (int k = 3; k < 6; ++k)
+        v[k] = Vec3(0, 0, -1);
+    const Approach a = first_approach(mesh, v, 1);
+    assert_true(std::abs(a.time - 0.05) < 1e-12);
+    assert_true(std::abs(a.gap - 0.1) < 1e-12 && std::abs(a.closing - 1) < 1e-12);
+    assert_true(a.first == 0 && a.second == 1);
+    // Sliding past each other at any speed costs nothing.
+    for (int k = 3; k < 6; ++k)
+        v[k] = Vec3(100, -50, 0);
+    assert_true(first_approach(mesh, v, 1).time == 1);
+}
+
+// Neighbours (a shared vertex) are the fold control's, and a pair that already meets has
+// no plane to keep: neither limits the step.
+void neighbours_and_meeting_pairs_do_not_limit(void **)
+{
+    TriMesh fan;
+    fan.pos = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0.1), Vec3(0, -1, 0.1)};
+    fan.tri = {Triangle{0, 1, 2}, Triangle{0, 3, 4}};
+    std::vector<Vec3> v(5, Vec3::Zero());
+    v[3] = v[4] = Vec3(5, 5, -1);
+    assert_true(first_approach(fan, v, 1).time == 1);
+    const Vec3 x[6] = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
+                       Vec3(0.2, 0.2, -1), Vec3(0.2, 0.2, 1), Vec3(0.3, 0.5, 1)};
+    const TriMesh crossing = two_triangles(x);
+    std::vector<Vec3> w(6, Vec3::Zero());
+    w[0] = Vec3(0, 0, 1);
+    assert_true(first_approach(crossing, w, 1).time == 1);
+}
+
+// A strip of triangles folded over itself in many layers, all closing: the same answer,
+// and the same pair, for one thread and for two.
+void the_answer_does_not_depend_on_threads(void **)
+{
+    TriMesh mesh;
+    Numbers rng{11};
+    std::vector<Vec3> v;
+    for (int layer = 0; layer < 40; ++layer)
+        for (int k = 0; k < 30; ++k) {
+            const int base = static_cast<int>(mesh.pos.size());
+            const Vec3 at(0.1 * k, 0, 0.05 * layer);
+            mesh.pos.push_back(at);
+            mesh.pos.push_back(at + Vec3(0.1, 0, 0));
+            mesh.pos.push_back(at + Vec3(0.05, 0.1, 0));
+            mesh.tri.push_back(Triangle{base, base + 1, base + 2});
+            const Vec3 speed = rng.point(0.5);
+            for (int c = 0; c < 3; ++c)
+                v.push_back(speed + rng.point(0.05));
+        }
+    Approach by[2];
+    for (int threads = 1; threads <= 2; ++threads) {
+        ThreadLimit limit(threads);
+        by[threads - 1] = first_approach(mesh, v, 1);
+    }
+    assert_true(by[0].time < 1);
+    assert_true(by[0].time == by[1].time && by[0].first == by[1].first && by[0].second == by[1].second);
+}
+
+} // namespace
+
+int main()
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(random_pairs_never_meet_within_the_allowed_step),
+        cmocka_unit_test(closing_plates_may_take_a_quarter_of_their_gap),
+        cmocka_unit_test(neighbours_and_meeting_pairs_do_not_limit),
+        cmocka_unit_test(the_answer_does_not_depend_on_threads),
+    };
+    return cmocka_run_group_tests_name("unit_collision_time", tests, nullptr, nullptr);
+}
