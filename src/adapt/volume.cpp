@@ -87,13 +87,15 @@ double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank,
     for (int32_t v = 0; v < n; ++v)
         moved[v] = offset[label[v]] != 0 ? Vec3(mesh.pos[v] + offset[label[v]] * normal[v]) : mesh.pos[v];
     // A component whose offset folds a triangle keeps its shape: each round leaves one more
-    // component as it was. A triangle flat before any offset (which no offset unfolds)
-    // leaves every component as it was. So there are at most as many rounds as components.
+    // component as it was. Only triangles with a corner the offsets move count: one that was
+    // flat before them is no fold of theirs (and would otherwise cost every component its
+    // correction). A triangle's corners are all of its component, so a component left as
+    // it was is never reported again: there are at most as many rounds as components.
     std::vector<char> kept(count, 0);
-    for (int32_t folded = first_folded_triangle(mesh, moved); folded >= 0;
-         folded = first_folded_triangle(mesh, moved)) {
+    for (int32_t folded = first_folded_moved_triangle(mesh, moved); folded >= 0;
+         folded = first_folded_moved_triangle(mesh, moved)) {
         const int32_t c = label[mesh.tri[folded][0]];
-        if (kept[c]) {
+        if (kept[c]) { // cannot happen (see above); a bound all the same
             moved = mesh.pos;
             break;
         }

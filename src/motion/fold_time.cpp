@@ -26,13 +26,27 @@ double first_positive_root(double c0, double c1, double c2)
     return first;
 }
 
+bool turned_over(const TriMesh &mesh, const std::vector<Vec3> &moved, int32_t t)
+{
+    const Triangle &c = mesh.tri[t];
+    const Vec3 before = (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]);
+    const Vec3 after = (moved[c[1]] - moved[c[0]]).cross(moved[c[2]] - moved[c[0]]);
+    return !(before.dot(after) > 0); // NaN counts as turned over
+}
+
 int32_t first_folded_triangle(const TriMesh &mesh, const std::vector<Vec3> &moved)
+{
+    const int32_t first = first_where(mesh.num_triangles(), [&](int32_t t) { return turned_over(mesh, moved, t); });
+    return first < mesh.num_triangles() ? first : -1;
+}
+
+int32_t first_folded_moved_triangle(const TriMesh &mesh, const std::vector<Vec3> &moved)
 {
     const int32_t first = first_where(mesh.num_triangles(), [&](int32_t t) {
         const Triangle &c = mesh.tri[t];
-        const Vec3 before = (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]);
-        const Vec3 after = (moved[c[1]] - moved[c[0]]).cross(moved[c[2]] - moved[c[0]]);
-        return !(before.dot(after) > 0);
+        const bool any_moved = moved[c[0]] != mesh.pos[c[0]] || moved[c[1]] != mesh.pos[c[1]] ||
+                               moved[c[2]] != mesh.pos[c[2]];
+        return any_moved && turned_over(mesh, moved, t);
     });
     return first < mesh.num_triangles() ? first : -1;
 }
