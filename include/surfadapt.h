@@ -20,6 +20,14 @@
  * drop on its own) to round-off. The tool's
  * `surfadapt enright` and `surfadapt vortex` follow exactly this schedule.
  *
+ * @par Coordinates
+ * The library computes in double precision with every |coordinate| at most 1e50 and a
+ * mesh that spans at least 1e-50 (the diagonal of its bounding box). Its geometry is made
+ * of products of up to six coordinate differences (areas, volumes, the fold tests and fold
+ * times); within this range none of them overflows, and none of the mesh's own size
+ * underflows. sfa_set_mesh() refuses a mesh outside it, and sfa_move() and sfa_advect() a
+ * step that would leave it; a host whose units put its surface outside scales it.
+ *
  * @par Conventions
  * - Counts and indices are `int32_t`; coordinates, velocities, times and field
  *   values are `double`, in the host's own (consistent) units.
@@ -65,7 +73,8 @@ enum sfa_status {
     SFA_ERR_ARGUMENT = 1, /**< Null pointer, negative count, buffer too small, unknown key, value out of range. */
     SFA_ERR_MESH = 2,     /**< The mesh given is not acceptable (index out of range, degenerate or duplicate
                                triangle, non-manifold edge or vertex, inconsistent orientation, non-finite
-                               coordinate, unreferenced vertex). */
+                               coordinate or one outside the range the library computes in, unreferenced
+                               vertex). */
     SFA_ERR_STATE = 3,    /**< Call out of order, e.g. no mesh set yet. */
     SFA_ERR_NUMERIC = 4,  /**< Non-finite velocity or field value; a step that cannot be taken without folding. */
     SFA_ERR_MEMORY = 5,   /**< An allocation failed. */
@@ -337,7 +346,9 @@ const char *sfa_last_error(const sfa_surface *s);
  * Accepted: closed or open (bounded) orientable 2-manifold surfaces, possibly of
  * several components, consistently oriented. Rejected with ::SFA_ERR_MESH and a
  * message naming the element and the rule: no triangles, a non-finite coordinate,
- * a vertex index out of range, a triangle that uses a vertex twice, a zero-area
+ * a coordinate outside the range the library computes in (every |coordinate| at most
+ * 1e50, and the mesh spanning at least 1e-50, the diagonal of its bounding box: see
+ * "Coordinates" at the top), a vertex index out of range, a triangle that uses a vertex twice, a zero-area
  * triangle, two triangles on the same three vertices (in any order), an edge
  * shared by more than two triangles, two triangles that traverse their shared edge
  * in the same direction (inconsistent orientation), a vertex whose triangles form
@@ -463,7 +474,9 @@ int sfa_set_velocities_checked(sfa_surface *s, int32_t nverts, const double *vel
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, dt not finite or <= 0),
  *         ::SFA_ERR_STATE (no mesh, or no velocities set), ::SFA_ERR_NUMERIC (even the
  *         largest safe step leaves a triangle flat or turned over once rounded: the fold is
- *         closer than round-off resolves), ::SFA_ERR_MEMORY.
+ *         closer than round-off resolves; or the step would carry a vertex outside the range
+ *         the library computes in, or shrink the mesh below it: see "Coordinates" at the
+ *         top; nothing moved), ::SFA_ERR_MEMORY.
  */
 int sfa_move(sfa_surface *s, double dt, double *dt_taken);
 
@@ -482,7 +495,9 @@ int sfa_move(sfa_surface *s, double dt, double *dt_taken);
  * @param dt       the step wanted, finite and > 0.
  * @param dt_taken receives the step taken, 0 < *dt_taken <= dt.
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT, ::SFA_ERR_STATE (no mesh), ::SFA_ERR_NUMERIC
- *         (`f` wrote a non-finite value, or no step short enough avoids folding), ::SFA_ERR_MEMORY.
+ *         (`f` wrote a non-finite value, or no step short enough avoids folding, or the step
+ *         would leave the range the library computes in, as for sfa_move(); nothing moved),
+ *         ::SFA_ERR_MEMORY.
  */
 int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t, double dt, double *dt_taken);
 

@@ -68,7 +68,7 @@ SFA_EXPORT int sfa_move(sfa_surface *s, double dt, double *dt_taken)
         require_mesh(s);
         if (s->velocity.empty())
             fail(Status::state, "no velocities have been set (call sfa_set_velocities first)");
-        Step step = explicit_step(s->mesh, s->velocity, dt, s->params.get(Param::fold_safety));
+        Step step = explicit_step(s->mesh, s->velocity, dt, s->params.get(Param::fold_safety), s->index_base);
         s->mesh.pos.swap(step.positions);
         *dt_taken = step.dt_taken;
     });
@@ -85,7 +85,7 @@ SFA_EXPORT int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t
         const VelocityField field = [f, ctx](int32_t n, const double *xyz, double time, double *vel) {
             f(ctx, n, xyz, time, vel);
         };
-        Step step = rk4_step(s->mesh, field, t, dt, s->params.get(Param::fold_safety));
+        Step step = rk4_step(s->mesh, field, t, dt, s->params.get(Param::fold_safety), s->index_base);
         s->mesh.pos.swap(step.positions);
         *dt_taken = step.dt_taken;
     });

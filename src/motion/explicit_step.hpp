@@ -15,14 +15,19 @@ struct Step {
 
 // dt_taken = min(dt, safety * first fold time). Throws Error(Status::numeric) if that
 // step would still leave a triangle flat or folded once rounded (the fold is closer than
-// round-off can resolve).
-Step explicit_step(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double safety);
+// round-off can resolve), or would leave the coordinate range (coordinate_range.hpp).
+// Messages count vertices and triangles from index_base, as the host does.
+Step explicit_step(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double safety,
+                   int32_t index_base);
 
 // x + dt v for every vertex.
 std::vector<Vec3> displaced(const std::vector<Vec3> &pos, const std::vector<Vec3> &velocity, double dt);
 
-// Throws Error(Status::numeric) naming the first triangle that `moved` leaves flat or
-// folded: the analytic fold time is exact, the rounded positions need not be.
-void require_no_fold(const TriMesh &mesh, const std::vector<Vec3> &moved, double dt_taken);
+// Throws Error(Status::numeric) if `moved`, the positions after a step of dt_taken, are
+// not a surface the library can go on with: first if a vertex is outside the coordinate
+// range or the surface spans less than it (then the fold test could not be trusted: its
+// products overflow or underflow), then naming the first triangle that `moved` leaves flat
+// or folded (the analytic fold time is exact, the rounded positions need not be).
+void require_valid_step(const TriMesh &mesh, const std::vector<Vec3> &moved, double dt_taken, int32_t index_base);
 
 } // namespace sfa

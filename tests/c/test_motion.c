@@ -249,6 +249,32 @@ static void step_too_small_to_move_is_numeric(void **state)
     mesh_free(&grid);
 }
 
+/* A velocity that would carry the surface outside the range the library computes in (every
+ * |coordinate| at most 1e50): refused, naming the vertex, nothing moved. */
+static void step_out_of_the_coordinate_range_refused(void **state)
+{
+    (void)state;
+    for (int base = 0; base <= 1; ++base) {
+        sfa_mesh_data cube = shape_unit_cube(); /* [0, 1e49]^3 */
+        for (int k = 0; k < 24; ++k)
+            cube.xyz[k] *= 1e49;
+        sfa_surface *s = make_surface(&cube, base);
+        double vel[24] = {0};
+        for (int v = 0; v < 8; ++v)
+            vel[3 * v] = 1e50; /* a translation: nothing folds, x = 0 passes 1e50 at t = 1 */
+        assert_ok(s, sfa_set_velocities(s, vel));
+        double taken = -1;
+        char vertex[32];
+        snprintf(vertex, sizeof vertex, "vertex %d", base); /* vertex 0 is the first out at t = 2 */
+        expect_unchanged(s, sfa_move(s, 2.0, &taken), SFA_ERR_NUMERIC, vertex, "outside the range the library computes in");
+        /* Within the range the same velocities move it. */
+        assert_ok(s, sfa_move(s, 0.5, &taken));
+        assert_true(taken == 0.5);
+        sfa_destroy(s);
+        mesh_free(&cube);
+    }
+}
+
 /* ------------------------------------------------------------------ sfa_advect */
 
 typedef struct {
@@ -432,6 +458,7 @@ int main(void)
         cmocka_unit_test(step_cut_short_before_a_fold),
         cmocka_unit_test(repeated_sub_steps_never_fold),
         cmocka_unit_test(step_too_small_to_move_is_numeric),
+        cmocka_unit_test(step_out_of_the_coordinate_range_refused),
         cmocka_unit_test(advect_bad_arguments),
         cmocka_unit_test(advect_non_finite_callback),
         cmocka_unit_test(advect_callback_sees_stages),
