@@ -467,14 +467,20 @@ int sfa_set_velocities_checked(sfa_surface *s, int32_t nverts, const double *vel
  * and the triangle turns over at the first positive root of n(0).n(t) = 0. The step is
  * cut to `dt_taken = min(dt, f * t_fold)` with f = ::SFA_PARAM_FOLD_SAFETY, t_fold the
  * earliest such root over all triangles. The host sub-steps with the rest (dt - dt_taken).
+ * A step the fold control would cut below 1e-12 dt is refused (::SFA_ERR_NUMERIC, naming
+ * the triangle that turns over first and when; nothing moved): the fold is then nearer
+ * than the surface can advance to, as when a bubble shrinks to a point (each step would
+ * halve the time left to the fold, and the host's time would stop advancing while every
+ * call returned ::SFA_OK). 10^12 sub-steps would be needed to finish dt.
  *
  * @param s        the surface.
  * @param dt       the step wanted, time units, finite and > 0.
- * @param dt_taken receives the step taken, 0 < *dt_taken <= dt.
+ * @param dt_taken receives the step taken, 1e-12 dt <= *dt_taken <= dt.
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, dt not finite or <= 0),
- *         ::SFA_ERR_STATE (no mesh, or no velocities set), ::SFA_ERR_NUMERIC (even the
- *         largest safe step leaves a triangle flat or turned over once rounded: the fold is
- *         closer than round-off resolves; or the step would carry a vertex outside the range
+ *         ::SFA_ERR_STATE (no mesh, or no velocities set), ::SFA_ERR_NUMERIC (the fold
+ *         control allows less than 1e-12 dt; or even the largest safe step leaves a triangle
+ *         flat or turned over once rounded: the fold is closer than round-off resolves; or
+ *         the step would carry a vertex outside the range
  *         the library computes in, or shrink the mesh below it: see "Coordinates" at the
  *         top; nothing moved), ::SFA_ERR_MEMORY.
  */
@@ -484,7 +490,8 @@ int sfa_move(sfa_surface *s, double dt, double *dt_taken);
  * Advances the surface by one classic fourth-order Runge–Kutta step through a velocity
  * field that the host evaluates in batches of all vertices (four calls of `f` per attempt).
  * The same fold control as sfa_move() applies to the RK4 displacement: if the step
- * would fold a triangle it is retried with a shorter one, and `*dt_taken < dt`.
+ * would fold a triangle it is retried with a shorter one, and `*dt_taken < dt`; as there,
+ * a step that would have to be cut below 1e-12 dt is refused.
  * Connectivity and vertex count do not change; the velocities set by
  * sfa_set_velocities() are not touched.
  *
@@ -493,11 +500,11 @@ int sfa_move(sfa_surface *s, double dt, double *dt_taken);
  * @param ctx      passed to `f` unchanged (may be NULL; never dereferenced by the library).
  * @param t        time at the start of the step.
  * @param dt       the step wanted, finite and > 0.
- * @param dt_taken receives the step taken, 0 < *dt_taken <= dt.
+ * @param dt_taken receives the step taken, 1e-12 dt <= *dt_taken <= dt.
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT, ::SFA_ERR_STATE (no mesh), ::SFA_ERR_NUMERIC
- *         (`f` wrote a non-finite value, or no step short enough avoids folding, or the step
- *         would leave the range the library computes in, as for sfa_move(); nothing moved),
- *         ::SFA_ERR_MEMORY.
+ *         (`f` wrote a non-finite value, or no step of at least 1e-12 dt avoids folding, or
+ *         the step would leave the range the library computes in, as for sfa_move();
+ *         nothing moved), ::SFA_ERR_MEMORY.
  */
 int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t, double dt, double *dt_taken);
 

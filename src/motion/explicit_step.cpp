@@ -24,10 +24,25 @@ Step explicit_step(const TriMesh &mesh, const std::vector<Vec3> &velocity, doubl
                    int32_t index_base)
 {
     Step step;
-    step.dt_taken = std::min(dt, safety * first_fold_time(mesh, velocity));
+    const Fold fold = first_fold(mesh, velocity);
+    step.dt_taken = std::min(dt, safety * fold.time);
+    require_step_at_least(fold, step.dt_taken, dt, index_base);
     step.positions = displaced(mesh.pos, velocity, step.dt_taken);
     require_valid_step(mesh, step.positions, step.dt_taken, index_base);
     return step;
+}
+
+void require_step_at_least(const Fold &fold, double allowed, double dt, int32_t index_base)
+{
+    if (allowed >= min_step_fraction * dt)
+        return;
+    char message[400];
+    std::snprintf(message, sizeof message,
+                  "triangle %d turns over %g time units from now along these velocities, so the fold control allows "
+                  "a step of only %g, less than %g of the step of %g asked: the surface cannot advance past the "
+                  "collapse of that triangle (as when a bubble shrinks to a point); nothing moved",
+                  fold.triangle + index_base, fold.time, allowed, min_step_fraction, dt);
+    throw Error(Status::numeric, message);
 }
 
 void require_valid_step(const TriMesh &mesh, const std::vector<Vec3> &moved, double dt_taken, int32_t index_base)

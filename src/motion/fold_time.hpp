@@ -13,6 +13,20 @@ namespace sfa {
 // triangle ever turns over along these velocities.
 double first_fold_time(const TriMesh &mesh, const std::vector<Vec3> &velocity);
 
+struct Fold {
+    double time;      // as first_fold_time
+    int32_t triangle; // the triangle that folds then (the lowest of a tie), or -1 if none does
+};
+// The same, and which triangle folds first.
+Fold first_fold(const TriMesh &mesh, const std::vector<Vec3> &velocity);
+
+// The fold time of one triangle with edges e1, e2 (from corner 0) whose corners' velocities
+// differ from corner 0's by d1, d2. Computed with the edges and the velocity differences
+// scaled by powers of two to about 1, which is exact: the same time to the last bit as
+// without (where that neither overflows nor underflows), for triangles and velocities of
+// any size. 0 where it cannot be told (a flat triangle, velocity differences that overflow).
+double triangle_fold_time(const Vec3 &e1, const Vec3 &e2, const Vec3 &d1, const Vec3 &d2);
+
 // Whether triangle t's normal at `moved` positions no longer points along its normal at
 // mesh.pos: flat or turned over, also by round-off, and also when it was flat already.
 bool turned_over(const TriMesh &mesh, const std::vector<Vec3> &moved, int32_t t);

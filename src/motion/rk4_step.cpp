@@ -56,12 +56,14 @@ Step rk4_step(const TriMesh &mesh, const VelocityField &field, double t, double 
     double h = dt;
     for (int attempt = 0; attempt < max_tries; ++attempt) {
         const std::vector<Vec3> velocity = rk4_velocity(mesh.pos, field, t, h, index_base);
-        const double allowed = safety * first_fold_time(mesh, velocity);
+        const Fold fold = first_fold(mesh, velocity);
+        const double allowed = safety * fold.time;
         if (h <= allowed) {
             Step step{displaced(mesh.pos, velocity, h), h};
             require_valid_step(mesh, step.positions, h, index_base);
             return step;
         }
+        require_step_at_least(fold, allowed, dt, index_base);
         h = std::min(allowed, 0.9 * h); // a little below, so that the retries do not creep
     }
     char message[200];
