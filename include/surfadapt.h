@@ -26,7 +26,10 @@
  * of products of up to six coordinate differences (areas, volumes, the fold tests and fold
  * times); within this range none of them overflows, and none of the mesh's own size
  * underflows. sfa_set_mesh() refuses a mesh outside it, and sfa_move() and sfa_advect() a
- * step that would leave it; a host whose units put its surface outside scales it.
+ * step that would leave it; a host whose units put its surface outside scales it. Volumes
+ * (the measure, and those the volume correction keeps) are summed about the centre of each
+ * closed component, so that a surface far from the origin keeps them to as many digits as
+ * its coordinates give its shape.
  *
  * @par Conventions
  * - Counts and indices are `int32_t`; coordinates, velocities, times and field
@@ -223,8 +226,10 @@ enum sfa_param {
 /** Quantities for sfa_measure(). */
 enum sfa_measure_quantity {
     /** Signed enclosed volume, sum over triangles of a.(b x c)/6 (divergence theorem;
-        positive for a closed surface with outward normals). For open surfaces the
-        same sum, which depends on the origin. Length units cubed. */
+        positive for a closed surface with outward normals), for each closed component
+        about the centre of its bounding box (the same value, without the digits lost
+        far from the origin). For open components the same sum about the origin, which
+        depends on the origin. Length units cubed. */
     SFA_MEASURE_VOLUME = 0,
     /** Total surface area, length units squared. */
     SFA_MEASURE_AREA = 1,
