@@ -62,6 +62,9 @@ TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=build/%.o)
 C_TESTS          := $(patsubst tests/c/%.c,build/tests/%,$(sort $(wildcard tests/c/test_*.c)))
 UNIT_TESTS       := $(patsubst tests/unit/%.cpp,build/tests/%,$(sort $(wildcard tests/unit/unit_*.cpp)))
 SAN_TESTS        := $(patsubst build/tests/%,build/san/tests/%,$(C_TESTS))
+# Unit tests of numeric edge cases (cells of non-finite points, fold times at extreme
+# scales), also run under the sanitizers: undefined behaviour is what they are about.
+SAN_UNIT_TESTS   := build/san/tests/unit_spatial_grid build/san/tests/unit_motion
 ALLOC_HOOK_OBJ   := build/tests/c/alloc_hook/alloc_hook.o
 FORTRAN_TEST     := build/tests/test_fortran
 FORTRAN_EXAMPLE  := build/examples/vortex_host
@@ -162,6 +165,10 @@ build/san/%.o: %.c | deps
 build/san/tests/test_%: build/san/tests/c/test_%.o $(TEST_SUPPORT:%.c=build/san/%.o) $(SAN_OBJS)
 	@mkdir -p $(@D)
 	$(SAN_CXX) $(SAN_FLAGS) -o $@ $^ -lcmocka -lm
+build/san/tests/unit_%: tests/unit/unit_%.cpp $(TEST_SUPPORT:%.c=build/san/%.o) $(SAN_OBJS)
+	@mkdir -p $(@D)
+	$(SAN_CXX) $(filter-out -O2 $(OPENMP),$(CXXFLAGS)) -Wno-unknown-pragmas -Itests/c -Iapps/surfadapt $(SAN_FLAGS) \
+	  -o $@ $^ -lcmocka -lm
 
 $(FORTRAN_TEST): tests/fortran/test_surfadapt.f90 $(FLIB_A) $(FMOD) $(LIB_SO) $(LIB_DEV)
 	@mkdir -p $(@D)/fortran
@@ -189,11 +196,12 @@ $(PLUGIN_TEST): tests/plugin/test_dlopen.c | deps
 test: deps-check $(UNIT_TESTS) $(C_TESTS)
 	@OMP_WAIT_POLICY=$${OMP_WAIT_POLICY:-passive} scripts/run-tests.sh $(UNIT_TESTS) $(C_TESTS)
 
-check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE) $(C_EXAMPLE) $(PLUGIN_TEST) $(FIDELITY) $(SAN_TESTS)
+check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE) $(C_EXAMPLE) $(PLUGIN_TEST) $(FIDELITY) $(SAN_TESTS) \
+       $(SAN_UNIT_TESTS)
 	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) "$(FORTRAN_EXAMPLE) 60" $(C_EXAMPLE) \
 	  "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" \
 	  tests/install/test_install.sh tests/cli/test_features_cli.sh tests/cli/test_remesh_cli.sh tests/cli/test_flows_cli.sh \
-	  tests/cli/test_fidelity.sh $(SAN_TESTS)
+	  tests/cli/test_fidelity.sh $(SAN_TESTS) $(SAN_UNIT_TESTS)
 
 # ------------------------------------------------------------------ ABI
 # abidiff exit status is a bit set: 4 = the ABI changed (additions), 8 = an incompatible

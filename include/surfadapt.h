@@ -20,6 +20,17 @@
  * drop on its own) to round-off. The tool's
  * `surfadapt enright` and `surfadapt vortex` follow exactly this schedule.
  *
+ * @par Coordinates
+ * The library computes in double precision with every |coordinate| at most 1e50 and a
+ * mesh that spans at least 1e-50 (the diagonal of its bounding box). Its geometry is made
+ * of products of up to six coordinate differences (areas, volumes, the fold tests and fold
+ * times); within this range none of them overflows, and none of the mesh's own size
+ * underflows. sfa_set_mesh() refuses a mesh outside it, and sfa_move() and sfa_advect() a
+ * step that would leave it; a host whose units put its surface outside scales it. Volumes
+ * (the measure, and those the volume correction keeps) are summed about the centre of each
+ * closed component, so that a surface far from the origin keeps them to as many digits as
+ * its coordinates give its shape.
+ *
  * @par Conventions
  * - Counts and indices are `int32_t`; coordinates, velocities, times and field
  *   values are `double`, in the host's own (consistent) units.
@@ -65,7 +76,8 @@ enum sfa_status {
     SFA_ERR_ARGUMENT = 1, /**< Null pointer, negative count, buffer too small, unknown key, value out of range. */
     SFA_ERR_MESH = 2,     /**< The mesh given is not acceptable (index out of range, degenerate or duplicate
                                triangle, non-manifold edge or vertex, inconsistent orientation, non-finite
-                               coordinate, unreferenced vertex). */
+                               coordinate or one outside the range the library computes in, unreferenced
+                               vertex). */
     SFA_ERR_STATE = 3,    /**< Call out of order, e.g. no mesh set yet. */
     SFA_ERR_NUMERIC = 4,  /**< Non-finite velocity or field value; a step that cannot be taken without folding. */
     SFA_ERR_MEMORY = 5,   /**< An allocation failed. */
@@ -230,8 +242,10 @@ enum sfa_param {
 /** Quantities for sfa_measure(). */
 enum sfa_measure_quantity {
     /** Signed enclosed volume, sum over triangles of a.(b x c)/6 (divergence theorem;
-        positive for a closed surface with outward normals). For open surfaces the
-        same sum, which depends on the origin. Length units cubed. */
+        positive for a closed surface with outward normals), for each closed component
+        about the centre of its bounding box (the same value, without the digits lost
+        far from the origin). For open components the same sum about the origin, which
+        depends on the origin. Length units cubed. */
     SFA_MEASURE_VOLUME = 0,
     /** Total surface area, length units squared. */
     SFA_MEASURE_AREA = 1,
@@ -353,7 +367,9 @@ const char *sfa_last_error(const sfa_surface *s);
  * Accepted: closed or open (bounded) orientable 2-manifold surfaces, possibly of
  * several components, consistently oriented. Rejected with ::SFA_ERR_MESH and a
  * message naming the element and the rule: no triangles, a non-finite coordinate,
- * a vertex index out of range, a triangle that uses a vertex twice, a zero-area
+ * a coordinate outside the range the library computes in (every |coordinate| at most
+ * 1e50, and the mesh spanning at least 1e-50, the diagonal of its bounding box: see
+ * "Coordinates" at the top), a vertex index out of range, a triangle that uses a vertex twice, a zero-area
  * triangle, two triangles on the same three vertices (in any order), an edge
  * shared by more than two triangles, two triangles that traverse their shared edge
  * in the same direction (inconsistent orientation), a vertex whose triangles form
@@ -472,14 +488,22 @@ int sfa_set_velocities_checked(sfa_surface *s, int32_t nverts, const double *vel
  * and the triangle turns over at the first positive root of n(0).n(t) = 0. The step is
  * cut to `dt_taken = min(dt, f * t_fold)` with f = ::SFA_PARAM_FOLD_SAFETY, t_fold the
  * earliest such root over all triangles. The host sub-steps with the rest (dt - dt_taken).
+ * A step the fold control would cut below 1e-12 dt is refused (::SFA_ERR_NUMERIC, naming
+ * the triangle that turns over first and when; nothing moved): the fold is then nearer
+ * than the surface can advance to, as when a bubble shrinks to a point (each step would
+ * halve the time left to the fold, and the host's time would stop advancing while every
+ * call returned ::SFA_OK). 10^12 sub-steps would be needed to finish dt.
  *
  * @param s        the surface.
  * @param dt       the step wanted, time units, finite and > 0.
- * @param dt_taken receives the step taken, 0 < *dt_taken <= dt.
+ * @param dt_taken receives the step taken, 1e-12 dt <= *dt_taken <= dt.
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, dt not finite or <= 0),
- *         ::SFA_ERR_STATE (no mesh, or no velocities set), ::SFA_ERR_NUMERIC (even the
- *         largest safe step leaves a triangle flat or turned over once rounded: the fold is
- *         closer than round-off resolves), ::SFA_ERR_MEMORY.
+ *         ::SFA_ERR_STATE (no mesh, or no velocities set), ::SFA_ERR_NUMERIC (the fold
+ *         control allows less than 1e-12 dt; or even the largest safe step leaves a triangle
+ *         flat or turned over once rounded: the fold is closer than round-off resolves; or
+ *         the step would carry a vertex outside the range
+ *         the library computes in, or shrink the mesh below it: see "Coordinates" at the
+ *         top; nothing moved), ::SFA_ERR_MEMORY.
  */
 int sfa_move(sfa_surface *s, double dt, double *dt_taken);
 
@@ -487,7 +511,8 @@ int sfa_move(sfa_surface *s, double dt, double *dt_taken);
  * Advances the surface by one classic fourth-order Runge–Kutta step through a velocity
  * field that the host evaluates in batches of all vertices (four calls of `f` per attempt).
  * The same fold control as sfa_move() applies to the RK4 displacement: if the step
- * would fold a triangle it is retried with a shorter one, and `*dt_taken < dt`.
+ * would fold a triangle it is retried with a shorter one, and `*dt_taken < dt`; as there,
+ * a step that would have to be cut below 1e-12 dt is refused.
  * Connectivity and vertex count do not change; the velocities set by
  * sfa_set_velocities() are not touched.
  *
@@ -496,9 +521,11 @@ int sfa_move(sfa_surface *s, double dt, double *dt_taken);
  * @param ctx      passed to `f` unchanged (may be NULL; never dereferenced by the library).
  * @param t        time at the start of the step.
  * @param dt       the step wanted, finite and > 0.
- * @param dt_taken receives the step taken, 0 < *dt_taken <= dt.
+ * @param dt_taken receives the step taken, 1e-12 dt <= *dt_taken <= dt.
  * @return ::SFA_OK, ::SFA_ERR_ARGUMENT, ::SFA_ERR_STATE (no mesh), ::SFA_ERR_NUMERIC
- *         (`f` wrote a non-finite value, or no step short enough avoids folding), ::SFA_ERR_MEMORY.
+ *         (`f` wrote a non-finite value, or no step of at least 1e-12 dt avoids folding, or
+ *         the step would leave the range the library computes in, as for sfa_move();
+ *         nothing moved), ::SFA_ERR_MEMORY.
  */
 int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t, double dt, double *dt_taken);
 

@@ -48,8 +48,8 @@ Verdict judge(const TriMesh &mesh, int32_t h, const std::vector<Mat3> &quadric, 
     // triangle fails this too (its normal is opposite or zero).
     const Vec3 old0 = (b - a).cross(p - a), old1 = (a - b).cross(q - b);
     const Vec3 new0 = (p - q).cross(a - q), new1 = (q - p).cross(b - p);
-    if (new0.squaredNorm() == 0 || new1.squaredNorm() == 0 || !within_dihedral(old0, old1, cos_max_dihedral) ||
-        !within_dihedral(new0, new1, cos_max_dihedral) || new0.dot(old0 + old1) <= 0 || new1.dot(old0 + old1) <= 0)
+    if (!(new0.squaredNorm() > 0) || !(new1.squaredNorm() > 0) || !within_dihedral(old0, old1, cos_max_dihedral) ||
+        !within_dihedral(new0, new1, cos_max_dihedral) || !(new0.dot(old0 + old1) > 0) || !(new1.dot(old0 + old1) > 0))
         return keep;
 
     // The quad's own two triangles count in three of the four vertex quadrics each. They
@@ -68,7 +68,7 @@ Verdict judge(const TriMesh &mesh, int32_t h, const std::vector<Mat3> &quadric, 
                           mp = to_metric_space * (p - centroid), mq = to_metric_space * (q - centroid);
     // The criterion means something only where the projection keeps both triangles'
     // orientation (near a ridge the summed frame can be steep to the quad).
-    if (cross2(mb - ma, mp - ma) <= 0 || cross2(ma - mb, mq - mb) <= 0)
+    if (!(cross2(mb - ma, mp - ma) > 0) || !(cross2(ma - mb, mq - mb) > 0))
         return keep;
     // Two acute opposite angles sum to less than pi: most edges are settled without an arc
     // tangent.

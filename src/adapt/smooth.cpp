@@ -3,6 +3,7 @@
 #include "geometry/circle.hpp"
 #include "geometry/crossing_guard.hpp"
 #include "geometry/local_fit.hpp"
+#include "mesh/error.hpp"
 #include "mesh/parallel.hpp"
 #include "motion/fold_time.hpp"
 
@@ -130,17 +131,21 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
 
     // Jacobi moves can still fold a triangle where neighbours move towards each other, or
     // carry a face through the other side of a sheet thinner than an edge: the vertices of
-    // such a face stay where they were in this sweep. Each round stops at least one more
-    // vertex, so this ends.
+    // such a face stay where they were in this sweep. Only faces with a corner that moves
+    // count: a face flat before the sweep (a collapsed bubble, round-off) is no fold of this
+    // move, and stopping its corners would not unfold it. So each round that goes on stops
+    // at least one vertex that moved, and there are at most n + 1 rounds.
     std::vector<Vec3> moved(n);
     const auto moves = [&](const Triangle &t) {
         return motion[t[0]] != Vec3::Zero() || motion[t[1]] != Vec3::Zero() || motion[t[2]] != Vec3::Zero();
     };
-    for (;;) {
+    for (int32_t round = 0;; ++round) {
+        if (round > n + 1) // cannot happen (see above); a bound all the same, not a hang
+            throw Error(Status::internal, "the smoothing sweep's fold re-check did not settle");
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
         for (int32_t v = 0; v < n; ++v)
             moved[v] = mesh.pos[v] + motion[v];
-        const int32_t folded = first_folded_triangle(mesh, moved);
+        const int32_t folded = first_folded_moved_triangle(mesh, moved);
         if (folded >= 0) {
             for (int32_t v : mesh.tri[folded])
                 motion[v] = Vec3::Zero();

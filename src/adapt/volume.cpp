@@ -35,11 +35,16 @@ double offset_for(const Eigen::Vector4d &c, double six_volume)
 
 std::vector<double> component_volumes(const TriMesh &mesh, const std::vector<int32_t> &label, int32_t count)
 {
+    // About each component's centre: about the origin, a unit sphere at 1e5 kept 1 digit of
+    // its volume, and the correction then moved its vertices to match that (-24 % through
+    // one sfa_adapt). An open component's volume is not used.
+    const std::vector<Vec3> about = component_centres(mesh.pos, label, count);
     std::vector<double> volume = ordered_group_sums(
         mesh.num_triangles(), count, 0.0, [&](int32_t t) { return label[mesh.tri[t][0]]; },
         [&](int32_t t) {
             const Triangle &c = mesh.tri[t];
-            return det(mesh.pos[c[0]], mesh.pos[c[1]], mesh.pos[c[2]]);
+            const Vec3 &o = about[label[c[0]]];
+            return det(mesh.pos[c[0]] - o, mesh.pos[c[1]] - o, mesh.pos[c[2]] - o);
         });
     for (double &v : volume)
         v /= 6;
@@ -61,11 +66,15 @@ double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank,
     for (int32_t v = 0; v < n; ++v)
         if (rank[v] == 0 && closed[label[v]])
             normal[v] = volume_gradient(mesh, v).normalized();
+    // About each component's centre (as component_volumes): the cubic's coefficients then
+    // keep the digits the coordinates give the shape, wherever the component lies.
+    const std::vector<Vec3> about = component_centres(mesh.pos, label, count);
     const std::vector<Eigen::Vector4d> coefficients = ordered_group_sums(
         mesh.num_triangles(), count, Eigen::Vector4d::Zero().eval(), [&](int32_t t) { return label[mesh.tri[t][0]]; },
         [&](int32_t k) {
             const Triangle &t = mesh.tri[k];
-            const Vec3 &p0 = mesh.pos[t[0]], &p1 = mesh.pos[t[1]], &p2 = mesh.pos[t[2]];
+            const Vec3 &o = about[label[t[0]]];
+            const Vec3 p0 = mesh.pos[t[0]] - o, p1 = mesh.pos[t[1]] - o, p2 = mesh.pos[t[2]] - o;
             const Vec3 &n0 = normal[t[0]], &n1 = normal[t[1]], &n2 = normal[t[2]];
             return Eigen::Vector4d(det(p0, p1, p2), det(n0, p1, p2) + det(p0, n1, p2) + det(p0, p1, n2),
                                    det(p0, n1, n2) + det(n0, p1, n2) + det(n0, n1, p2), det(n0, n1, n2));
@@ -87,13 +96,15 @@ double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank,
     for (int32_t v = 0; v < n; ++v)
         moved[v] = offset[label[v]] != 0 ? Vec3(mesh.pos[v] + offset[label[v]] * normal[v]) : mesh.pos[v];
     // A component whose offset folds a triangle keeps its shape: each round leaves one more
-    // component as it was. A triangle flat before any offset (which no offset unfolds)
-    // leaves every component as it was. So there are at most as many rounds as components.
+    // component as it was. Only triangles with a corner the offsets move count: one that was
+    // flat before them is no fold of theirs (and would otherwise cost every component its
+    // correction). A triangle's corners are all of its component, so a component left as
+    // it was is never reported again: there are at most as many rounds as components.
     std::vector<char> kept(count, 0);
-    for (int32_t folded = first_folded_triangle(mesh, moved); folded >= 0;
-         folded = first_folded_triangle(mesh, moved)) {
+    for (int32_t folded = first_folded_moved_triangle(mesh, moved); folded >= 0;
+         folded = first_folded_moved_triangle(mesh, moved)) {
         const int32_t c = label[mesh.tri[folded][0]];
-        if (kept[c]) {
+        if (kept[c]) { // cannot happen (see above); a bound all the same
             moved = mesh.pos;
             break;
         }

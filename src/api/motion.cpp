@@ -72,7 +72,7 @@ SFA_EXPORT int sfa_move(sfa_surface *s, double dt, double *dt_taken)
         const double safety = s->params.get(Param::fold_safety);
         Step step = s->params.get(Param::collision_safe_motion) != 0
                         ? collision_safe_explicit_step(s->mesh, s->velocity, dt, safety, s->index_base)
-                        : explicit_step(s->mesh, s->velocity, dt, safety);
+                        : explicit_step(s->mesh, s->velocity, dt, safety, s->index_base);
         s->mesh.pos.swap(step.positions);
         *dt_taken = step.dt_taken;
     });
@@ -92,7 +92,7 @@ SFA_EXPORT int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t
         const double safety = s->params.get(Param::fold_safety);
         Step step = s->params.get(Param::collision_safe_motion) != 0
                         ? collision_safe_rk4_step(s->mesh, field, t, dt, safety, s->index_base)
-                        : rk4_step(s->mesh, field, t, dt, safety);
+                        : rk4_step(s->mesh, field, t, dt, safety, s->index_base);
         s->mesh.pos.swap(step.positions);
         *dt_taken = step.dt_taken;
     });

@@ -8,7 +8,7 @@ bool circle_through(const Vec3 &a, const Vec3 &b, const Vec3 &c, Circle &circle)
 {
     // Centre a + (|u|^2 w x n + |w|^2 n x u) / (2 |n|^2), n = u x w, u = b - a, w = c - a.
     const Vec3 u = b - a, w = c - a, n = u.cross(w);
-    if (n.squaredNorm() <= 1e-24 * u.squaredNorm() * w.squaredNorm())
+    if (!(n.squaredNorm() > 1e-24 * u.squaredNorm() * w.squaredNorm())) // collinear, or NaN
         return false;
     const Vec3 to_centre = (u.squaredNorm() * w.cross(n) + w.squaredNorm() * n.cross(u)) / (2 * n.squaredNorm());
     circle = {a + to_centre, n.normalized(), to_centre.norm()};
@@ -34,7 +34,7 @@ Vec3 arc_midpoint(const Vec3 *third, const Vec3 &a, const Vec3 &b)
     if (!third || !circle_through(*third, a, b, circle))
         return chord_midpoint;
     const Vec3 out = chord_midpoint - circle.centre;
-    if (out.squaredNorm() <= 1e-24 * circle.radius * circle.radius)
+    if (!(out.squaredNorm() > 1e-24 * circle.radius * circle.radius))
         return chord_midpoint; // a and b opposite: no curve this coarse is worth following
     return circle.centre + circle.radius * out.normalized();
 }

@@ -34,7 +34,7 @@ bool fitted_surface_point(const TriMesh &mesh, int32_t v, const VertexMetric &fr
             offset[count] = d;
         ++count;
     });
-    if (count < 5 || scale2 == 0)
+    if (count < 5 || !(scale2 > 0))
         return false;
     scale2 /= count;
     const double scale = std::sqrt(scale2);

@@ -1,6 +1,7 @@
 #include "geometry/measures.hpp"
 
 #include "geometry/angles.hpp"
+#include "mesh/components.hpp"
 #include "mesh/parallel.hpp"
 
 #include <algorithm>
@@ -19,20 +20,43 @@ double enclosed_volume(const TriMesh &mesh) { return enclosed_volume(mesh, mesh.
 
 double enclosed_volume(const TriMesh &mesh, const std::vector<Vec3> &positions)
 {
+    const Components components = connected_components(mesh);
+    std::vector<Vec3> about = component_centres(positions, components.of_vertex, components.count);
+    for (int32_t c = 0; c < components.count; ++c)
+        if (!components.closed[c])
+            about[c] = Vec3::Zero(); // an open component's sum is the one about the origin
     return ordered_sum(mesh.num_triangles(), 0.0, [&](int32_t k) {
                const Triangle &t = mesh.tri[k];
-               return positions[t[0]].dot(positions[t[1]].cross(positions[t[2]]));
+               const Vec3 &o = about[components.of_vertex[t[0]]];
+               return (positions[t[0]] - o).dot((positions[t[1]] - o).cross(positions[t[2]] - o));
            }) /
            6;
+}
+
+std::vector<Vec3> component_centres(const std::vector<Vec3> &positions, const std::vector<int32_t> &label,
+                                    int32_t count)
+{
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<Vec3> low(count, Vec3::Constant(inf)), high(count, Vec3::Constant(-inf));
+    for (size_t v = 0; v < positions.size(); ++v) {
+        low[label[v]] = low[label[v]].cwiseMin(positions[v]);
+        high[label[v]] = high[label[v]].cwiseMax(positions[v]);
+    }
+    std::vector<Vec3> centre(count, Vec3::Zero());
+    for (int32_t c = 0; c < count; ++c)
+        if (low[c].x() <= high[c].x())
+            centre[c] = low[c] + (high[c] - low[c]) / 2; // not (low + high) / 2: no overflow
+    return centre;
 }
 
 Vec3 volume_gradient(const TriMesh &mesh, int32_t v)
 {
     Vec3 gradient = Vec3::Zero();
+    const Vec3 &p = mesh.pos[v];
     mesh.for_each_outgoing(v, [&](int32_t h) {
         const Triangle &t = mesh.tri[TriMesh::face(h)];
         const int k = h % 3; // v is corner k
-        gradient += mesh.pos[t[(k + 1) % 3]].cross(mesh.pos[t[(k + 2) % 3]]);
+        gradient += (mesh.pos[t[(k + 1) % 3]] - p).cross(mesh.pos[t[(k + 2) % 3]] - p);
     });
     return gradient / 6;
 }

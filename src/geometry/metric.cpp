@@ -48,12 +48,12 @@ Eigen::Matrix2d frame_rotation(const Eigen::Matrix<double, 3, 2> &frame_q, const
     const double n2 = s.col(1).norm();
     // Frames at right angles (q's tangent plane contains p's normal) have no meaningful
     // projection; fall back to the identity rather than divide by zero.
-    if (n2 < 1e-12)
+    if (!(n2 >= 1e-12))
         return Eigen::Matrix2d::Identity();
     r.col(1) = s.col(1) / n2;
     const Eigen::Vector2d rest = s.col(0) - r.col(1).dot(s.col(0)) * r.col(1);
     const double n1 = rest.norm();
-    r.col(0) = n1 < 1e-12 ? Eigen::Vector2d(r(1, 1), -r(0, 1)) : Eigen::Vector2d(rest / n1);
+    r.col(0) = !(n1 >= 1e-12) ? Eigen::Vector2d(r(1, 1), -r(0, 1)) : Eigen::Vector2d(rest / n1);
     return r;
 }
 

@@ -56,7 +56,7 @@ inline Eigen::Matrix2d tensor_in_frame(const VertexMetric &q, const VertexMetric
         return a * Eigen::Matrix2d::Identity();
     const double s2x = q.major.dot(p.minor), s2y = q.minor.dot(p.minor);
     const double n2 = std::sqrt(s2x * s2x + s2y * s2y);
-    if (n2 < 1e-12)
+    if (!(n2 >= 1e-12))
         return q.tensor();
     const double x = s2x / n2, y = s2y / n2;
     const double across = q.major.dot(p.major) * y - q.minor.dot(p.major) * x; // S_1 . (y, -x)

@@ -241,10 +241,10 @@ RemapPath remap_by_overlap(const Corners *old_faces, const double *old_values, i
         for (int32_t i = 0; i < n_old; ++i) {
             const double twice_new = std::abs(news[j].twice_signed_area);
             const double twice_old = std::abs(olds[i].twice_signed_area);
-            if (boxes_apart(news[j], olds[i]) || twice_new == 0 || twice_old == 0)
+            if (boxes_apart(news[j], olds[i]) || !(twice_new > 0) || !(twice_old > 0))
                 continue;
             const double o = overlap_ccw(news[j].p, twice_new, olds[i].p, twice_old);
-            if (o <= 0)
+            if (!(o > 0))
                 continue;
             weight += o;
             const double *in = old_values + static_cast<size_t>(ncomp) * i;

@@ -30,7 +30,7 @@ std::vector<Vec3> weighted_normals(const std::vector<Vec3> &area_vectors)
 Mat3 face_quadric(const Vec3 &area_vector)
 {
     const double area = area_vector.norm();
-    return area == 0 ? Mat3::Zero() : Mat3(area_vector * area_vector.transpose() / area);
+    return !(area > 0) ? Mat3::Zero() : Mat3(area_vector * area_vector.transpose() / area);
 }
 
 QuadricEigen decompose(const Mat3 &quadric)

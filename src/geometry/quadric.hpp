@@ -38,7 +38,7 @@ Mat3 face_quadric(const Vec3 &area_vector);
 inline Vec3 weighted_normal(const Vec3 &area_vector)
 {
     const double area = area_vector.norm();
-    return area == 0 ? Vec3::Zero() : Vec3(area_vector / std::sqrt(area));
+    return !(area > 0) ? Vec3::Zero() : Vec3(area_vector / std::sqrt(area));
 }
 std::vector<Vec3> weighted_normals(const std::vector<Vec3> &area_vectors);
 

@@ -29,7 +29,7 @@ Vec3 quadric_error_minimum_along(const TriMesh &mesh, ForEachFace &&for_each_fac
         const Triangle &c = mesh.tri[f];
         const Vec3 twice_area = (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]);
         const double norm = twice_area.norm();
-        if (norm == 0)
+        if (!(norm > 0)) // flat, or NaN
             return;
         const Vec3 n = twice_area / norm;
         const double along = n.dot(direction);

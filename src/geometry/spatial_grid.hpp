@@ -46,7 +46,21 @@ struct CellFrame {
     GridCell cell_of(const Vec3 &p) const
     {
         const Vec3 c = ((p - origin) / size).array().floor();
-        return {static_cast<int64_t>(c[0]), static_cast<int64_t>(c[1]), static_cast<int64_t>(c[2])};
+        return {cell_number(c[0]), cell_number(c[1]), cell_number(c[2])};
+    }
+
+    // Beyond +-2^52 cells on an axis (where a double has no fractions left; a surface spans
+    // far fewer) the cell is the last one, and NaN (from a coordinate that overflowed) is
+    // the lowest: converting such a value to an integer would be undefined behaviour. The
+    // differences of two cell numbers still fit an int64_t.
+    static constexpr double max_cell = 4503599627370496.0; // 2^52
+    static int64_t cell_number(double floored)
+    {
+        if (!(floored >= -max_cell)) // also NaN
+            return -static_cast<int64_t>(max_cell);
+        if (!(floored <= max_cell))
+            return static_cast<int64_t>(max_cell);
+        return static_cast<int64_t>(floored);
     }
 };
 

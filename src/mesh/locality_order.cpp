@@ -34,14 +34,17 @@ std::vector<int32_t> morton_order(const std::vector<Vec3> &pos)
         high = high.cwiseMax(p);
     }
     const double cells = static_cast<double>((uint64_t{1} << bits_per_axis) - 1);
+    // In [0, cells] for positions in the box; a NaN (or a box whose size overflowed) would
+    // make the conversion to an integer undefined: such a vertex goes to cell 0.
+    const auto to_cell = [cells](double c) { return c >= 0 ? static_cast<uint64_t>(std::min(c, cells)) : uint64_t{0}; };
     const Vec3 scale = (high - low).cwiseMax(1e-300).cwiseInverse() * cells;
     const int32_t n = static_cast<int32_t>(pos.size());
     std::vector<std::pair<uint64_t, int32_t>> keyed(n);
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < n; ++v) {
         const Vec3 cell = (pos[v] - low).cwiseProduct(scale);
-        keyed[v] = {spread_bits(static_cast<uint64_t>(cell.x())) | spread_bits(static_cast<uint64_t>(cell.y())) << 1 |
-                        spread_bits(static_cast<uint64_t>(cell.z())) << 2,
+        keyed[v] = {spread_bits(to_cell(cell.x())) | spread_bits(to_cell(cell.y())) << 1 |
+                        spread_bits(to_cell(cell.z())) << 2,
                     v};
     }
     std::sort(keyed.begin(), keyed.end());

@@ -1,5 +1,6 @@
 #include "mesh/validate.hpp"
 
+#include "mesh/coordinate_range.hpp"
 #include "mesh/error.hpp"
 #include "mesh/vertex_star.hpp"
 
@@ -50,8 +51,22 @@ std::vector<Vec3> checked_positions(const MeshInput &in)
         if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
             reject("vertex %d has a non-finite coordinate (%g, %g, %g)", v + in.index_base, p[0], p[1], p[2]);
         pos[v] = Vec3(p[0], p[1], p[2]);
+        if (!coordinate_in_range(pos[v]))
+            reject("vertex %d at (%g, %g, %g) has a coordinate outside the range the library computes in (%s)",
+                   v + in.index_base, p[0], p[1], p[2], coordinate_range_text());
     }
     return pos;
+}
+
+// The mesh's size, once the unreferenced vertices are gone: below the range, every product
+// of its coordinate differences underflows (a good sphere of radius 1e-100 looked flat).
+void check_extent(const std::vector<Vec3> &pos)
+{
+    const double extent = extent_of(pos);
+    if (!(extent >= min_extent))
+        reject("the mesh spans only %g (the diagonal of its bounding box), outside the range the library computes "
+               "in (%s); give it in other units",
+               extent, coordinate_range_text());
 }
 
 // Unreferenced vertices: an error, or removed with the triangles renumbered.
@@ -81,7 +96,8 @@ void handle_unreferenced(const MeshInput &in, std::vector<Vec3> &pos, std::vecto
 }
 
 // Zero area up to round-off: twice the area is no more than a few ulps of the squared
-// longest edge, i.e. the corners are collinear or coincide in floating point.
+// longest edge, i.e. the corners are collinear or coincide in floating point. Written so
+// that NaN fails it too (within the coordinate range none arises).
 void check_areas(const std::vector<Vec3> &pos, const std::vector<Triangle> &tri, const std::vector<int32_t> &host_id,
                  int32_t base)
 {
@@ -89,7 +105,7 @@ void check_areas(const std::vector<Vec3> &pos, const std::vector<Triangle> &tri,
     for (size_t t = 0; t < tri.size(); ++t) {
         const Vec3 &a = pos[tri[t][0]], &b = pos[tri[t][1]], &c = pos[tri[t][2]];
         const double longest2 = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
-        if ((b - a).cross(c - a).norm() <= tolerance * longest2)
+        if (!((b - a).cross(c - a).norm() > tolerance * longest2))
             reject("triangle %d has zero area (its vertices %d, %d, %d are collinear or coincide)",
                    static_cast<int32_t>(t) + base, host_id[tri[t][0]] + base, host_id[tri[t][1]] + base,
                    host_id[tri[t][2]] + base);
@@ -189,6 +205,7 @@ TriMesh validated_mesh(const MeshInput &in)
     handle_unreferenced(in, mesh.pos, mesh.tri);
 
     const int32_t base = in.index_base;
+    check_extent(mesh.pos);
     check_areas(mesh.pos, mesh.tri, host_id, base);
     const VertexStar star(mesh.num_vertices(), mesh.tri);
     check_duplicates(mesh, star, host_id, base);

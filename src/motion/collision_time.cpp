@@ -123,12 +123,15 @@ Reach reach_of(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &va, cons
 
 // True if the two cannot meet within dt: the gap between their balls is more than their
 // points' relative motion can close (the ball of each moves with its mean velocity, and
-// each point within its spread of it). A margin of a millionth covers the rounding.
+// each point within its spread of it). The margins cover the rounding: of the speeds, and
+// of centres and radii, which are as exact as the coordinates are far from the origin.
 bool out_of_reach(const Reach &s, const Reach &t, double dt)
 {
     const double gap = (s.centre - t.centre).norm() - s.radius - t.radius;
     const double reach = dt * ((s.velocity - t.velocity).norm() + s.spread + t.spread);
-    return gap > (1 + 1e-6) * reach + 1e-12 * (s.radius + t.radius);
+    const double rounding =
+        1e-14 * (s.centre.cwiseAbs().maxCoeff() + t.centre.cwiseAbs().maxCoeff() + s.radius + t.radius);
+    return gap > (1 + 1e-6) * reach + rounding;
 }
 
 bool earlier(const Approach &a, const Approach &b)

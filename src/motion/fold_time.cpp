@@ -26,34 +26,82 @@ double first_positive_root(double c0, double c1, double c2)
     return first;
 }
 
+bool turned_over(const TriMesh &mesh, const std::vector<Vec3> &moved, int32_t t)
+{
+    const Triangle &c = mesh.tri[t];
+    const Vec3 before = (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]);
+    const Vec3 after = (moved[c[1]] - moved[c[0]]).cross(moved[c[2]] - moved[c[0]]);
+    return !(before.dot(after) > 0); // NaN counts as turned over
+}
+
 int32_t first_folded_triangle(const TriMesh &mesh, const std::vector<Vec3> &moved)
+{
+    const int32_t first = first_where(mesh.num_triangles(), [&](int32_t t) { return turned_over(mesh, moved, t); });
+    return first < mesh.num_triangles() ? first : -1;
+}
+
+int32_t first_folded_moved_triangle(const TriMesh &mesh, const std::vector<Vec3> &moved)
 {
     const int32_t first = first_where(mesh.num_triangles(), [&](int32_t t) {
         const Triangle &c = mesh.tri[t];
-        const Vec3 before = (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]);
-        const Vec3 after = (moved[c[1]] - moved[c[0]]).cross(moved[c[2]] - moved[c[0]]);
-        return !(before.dot(after) > 0);
+        const bool any_moved = moved[c[0]] != mesh.pos[c[0]] || moved[c[1]] != mesh.pos[c[1]] ||
+                               moved[c[2]] != mesh.pos[c[2]];
+        return any_moved && turned_over(mesh, moved, t);
     });
     return first < mesh.num_triangles() ? first : -1;
 }
 
-double first_fold_time(const TriMesh &mesh, const std::vector<Vec3> &velocity)
+double triangle_fold_time(const Vec3 &e1, const Vec3 &e2, const Vec3 &d1, const Vec3 &d2)
 {
-    // min is exact, so the reduction gives the same time for any number of threads.
-    double first = std::numeric_limits<double>::infinity();
-#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(min : first)
-    for (int32_t k = 0; k < mesh.num_triangles(); ++k) {
+    // n(t) = n0 + t (e1 x d2 + d1 x e2) + t^2 (d1 x d2); fold where n0.n(t) = 0, a quartic
+    // in the lengths. With |x| <= 1e50 it would not overflow, but a sliver's or a fast
+    // vertex's would underflow or overflow (a collapsing bubble's c0 went to 0 and its
+    // "safe step" with it). Scaled, e = 2^k e' and d = 2^j d', the quadratic in tau =
+    // t 2^(j-k) has the coefficients c0 2^-4k, c1 2^-(3k+j), c2 2^-(2k+2j), each exactly,
+    // and so its root is exactly t 2^(j-k).
+    const double none = std::numeric_limits<double>::infinity();
+    const double edge = std::max(e1.cwiseAbs().maxCoeff(), e2.cwiseAbs().maxCoeff());
+    const double speed = std::max(d1.cwiseAbs().maxCoeff(), d2.cwiseAbs().maxCoeff());
+    if (speed == 0)
+        return none; // moved rigidly by a translation
+    if (!(edge > 0) || !std::isfinite(speed))
+        return 0;
+    int k = 0, j = 0;
+    std::frexp(edge, &k);
+    std::frexp(speed, &j);
+    const auto scaled = [](const Vec3 &v, int by) {
+        return Vec3(std::ldexp(v.x(), by), std::ldexp(v.y(), by), std::ldexp(v.z(), by));
+    };
+    const Vec3 f1 = scaled(e1, -k), f2 = scaled(e2, -k), g1 = scaled(d1, -j), g2 = scaled(d2, -j);
+    const Vec3 n0 = f1.cross(f2);
+    const double c0 = n0.squaredNorm();
+    if (!(c0 > 0))
+        return 0; // flat (to within 1e-154 of its edges' size): no direction to keep
+    const double c1 = n0.dot(f1.cross(g2) + g1.cross(f2));
+    const double c2 = n0.dot(g1.cross(g2));
+    const double tau = first_positive_root(c0, c1, c2);
+    return tau == none ? none : std::ldexp(tau, k - j);
+}
+
+Fold first_fold(const TriMesh &mesh, const std::vector<Vec3> &velocity)
+{
+    // Each triangle's time, then the earliest in triangle order: the same answer for any
+    // number of threads.
+    const int32_t nt = mesh.num_triangles();
+    std::vector<double> time(nt);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t k = 0; k < nt; ++k) {
         const Triangle &t = mesh.tri[k];
-        const Vec3 e1 = mesh.pos[t[1]] - mesh.pos[t[0]], e2 = mesh.pos[t[2]] - mesh.pos[t[0]];
-        const Vec3 d1 = velocity[t[1]] - velocity[t[0]], d2 = velocity[t[2]] - velocity[t[0]];
-        const Vec3 n0 = e1.cross(e2);
-        // n(t) = n0 + t (e1 x d2 + d1 x e2) + t^2 (d1 x d2); fold where n0.n(t) = 0.
-        const double c0 = n0.squaredNorm();
-        const double c1 = n0.dot(e1.cross(d2) + d1.cross(e2));
-        const double c2 = n0.dot(d1.cross(d2));
-        first = std::min(first, first_positive_root(c0, c1, c2));
+        time[k] = triangle_fold_time(mesh.pos[t[1]] - mesh.pos[t[0]], mesh.pos[t[2]] - mesh.pos[t[0]],
+                                     velocity[t[1]] - velocity[t[0]], velocity[t[2]] - velocity[t[0]]);
     }
+    Fold first{std::numeric_limits<double>::infinity(), -1};
+    for (int32_t k = 0; k < nt; ++k)
+        if (time[k] < first.time)
+            first = {time[k], k};
     return first;
 }
+
+double first_fold_time(const TriMesh &mesh, const std::vector<Vec3> &velocity) { return first_fold(mesh, velocity).time; }
 
 } // namespace sfa

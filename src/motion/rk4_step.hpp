@@ -14,6 +14,7 @@ using VelocityField = std::function<void(int32_t n, const double *xyz, double t,
 // Takes the RK4 step of length h <= dt whose displacement, seen as linear motion over h,
 // reaches no fold before h / safety; shorter h are tried as needed. Throws
 // Error(Status::numeric) if the field gives a non-finite value or no step avoids folding.
-Step rk4_step(const TriMesh &mesh, const VelocityField &field, double t, double dt, double safety);
+// Messages count vertices and triangles from index_base.
+Step rk4_step(const TriMesh &mesh, const VelocityField &field, double t, double dt, double safety, int32_t index_base);
 
 } // namespace sfa

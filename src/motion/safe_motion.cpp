@@ -37,14 +37,14 @@ std::vector<Vec3> mean_velocity(const TriMesh &mesh, const Step &step)
 Step collision_safe_explicit_step(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double safety,
                                   int32_t index_base)
 {
-    Step step = explicit_step(mesh, velocity, dt, safety);
+    Step step = explicit_step(mesh, velocity, dt, safety, index_base);
     const Approach a = first_approach(mesh, velocity, step.dt_taken);
     if (a.time >= step.dt_taken)
         return step;
     require_room(a, "at the start of the step", index_base);
     step.dt_taken = a.time;
     step.positions = displaced(mesh.pos, velocity, step.dt_taken);
-    require_no_fold(mesh, step.positions, step.dt_taken);
+    require_valid_step(mesh, step.positions, step.dt_taken, index_base);
     return step;
 }
 
@@ -56,7 +56,7 @@ Step collision_safe_rk4_step(const TriMesh &mesh, const VelocityField &field, do
     constexpr int max_tries = 40;
     double h = dt;
     for (int attempt = 0; attempt < max_tries; ++attempt) {
-        Step step = rk4_step(mesh, field, t, h, safety);
+        Step step = rk4_step(mesh, field, t, h, safety, index_base);
         const Approach a = first_approach(mesh, mean_velocity(mesh, step), step.dt_taken);
         if (a.time >= step.dt_taken)
             return step;

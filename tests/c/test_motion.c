@@ -1,6 +1,8 @@
 /* sfa_set_velocities, sfa_move and sfa_advect: exact steps, fold control, bad input. */
 #include "support/testing.h"
 
+#include <unistd.h>
+
 static const double pi = 3.14159265358979323846;
 
 /* Unnormalised normal of triangle t. */
@@ -214,8 +216,9 @@ static void repeated_sub_steps_never_fold(void **state)
 static void step_too_small_to_move_is_numeric(void **state)
 {
     (void)state;
-    /* Each cut step halves the gap between vertex 12 and x = 3; once half the gap no
-     * longer changes a coordinate, the step cannot be taken: SFA_ERR_NUMERIC, nothing moved. */
+    /* Each cut step halves the gap between vertex 12 and x = 3, and the step with it: from
+     * 0.05 * 2^-k, below 1e-12 of the dt = 1 asked once k = 36. Then SFA_ERR_NUMERIC naming
+     * a triangle at vertex 12, nothing moved; vertex 12 never reaches x = 3 before. */
     sfa_mesh_data grid;
     sfa_surface *s = patch_with_runaway_vertex(&grid);
     int rc = SFA_OK, steps = 0;
@@ -225,12 +228,15 @@ static void step_too_small_to_move_is_numeric(void **state)
         double taken = -1;
         rc = sfa_move(s, 1.0, &taken);
         if (rc != SFA_OK) {
-            assert_error(s, rc, SFA_ERR_NUMERIC, "");
+            print_message("%s\n", sfa_last_error(s));
+            assert_error(s, rc, SFA_ERR_NUMERIC, "turns over", "less than 1e-12");
+            assert_true(contains_phrase(sfa_last_error(s), "triangle 13") ||
+                        contains_phrase(sfa_last_error(s), "triangle 14"));
             snapshot_take(s, &after);
             assert_same_snapshot(&before, &after);
             snapshot_free(&after);
         } else {
-            assert_true(taken > 0 && taken < 1.0);
+            assert_true(taken >= 1e-12 && taken < 1.0);
             sfa_mesh_data now = read_back(s);
             const double x = now.xyz[3 * 12];
             mesh_free(&now);
@@ -244,9 +250,90 @@ static void step_too_small_to_move_is_numeric(void **state)
     }
     print_message("SFA_ERR_NUMERIC after %d steps\n", steps);
     assert_int_equal(rc, SFA_ERR_NUMERIC);
-    assert_true(steps > 40); /* not before the gap is down to rounding */
+    assert_int_equal(steps, 37);
     sfa_destroy(s);
     mesh_free(&grid);
+}
+
+/* A bubble shrinking to a point under v = -x (velocities set once, the host sub-stepping as
+ * the header says): every step halves the time left to the collapse at t = 1. It used to
+ * return SFA_OK 387 times while t stopped advancing, then fail with a "largest safe step,
+ * 0", after which sfa_adapt never returned. Now: SFA_ERR_NUMERIC once the step would be
+ * below 1e-12 of what is asked, nothing moved, and the surface as it is then smooths and
+ * adapts. */
+static void collapsing_bubble_stops_with_an_error(void **state)
+{
+    (void)state;
+    alarm(120); /* a hang ends the program instead of stalling the run */
+    for (int base = 0; base <= 1; ++base) {
+        sfa_mesh_data sphere = shape_icosphere(3, 1.0);
+        sfa_surface *s = make_surface(&sphere, base);
+        double *vel = malloc(sizeof(double) * 3 * (size_t)sphere.nverts);
+        assert_non_null(vel);
+        for (int32_t i = 0; i < 3 * sphere.nverts; ++i)
+            vel[i] = -sphere.xyz[i];
+        assert_ok(s, sfa_set_velocities(s, vel));
+        const double end = 2;
+        double t = 0;
+        int steps = 0, rc = SFA_OK;
+        while (t < end && steps < 1000) {
+            double taken = -1;
+            snapshot before, after;
+            snapshot_take(s, &before);
+            rc = sfa_move(s, end - t, &taken);
+            if (rc != SFA_OK) {
+                print_message("after %d steps, t = %.17g: %s\n", steps, t, sfa_last_error(s));
+                assert_error(s, rc, SFA_ERR_NUMERIC, "triangle", "turns over", "less than 1e-12");
+                snapshot_take(s, &after);
+                assert_same_snapshot(&before, &after);
+                snapshot_free(&after);
+                snapshot_free(&before);
+                break;
+            }
+            snapshot_free(&before);
+            assert_true(taken >= 1e-12 * (end - t));
+            t += taken;
+            ++steps;
+        }
+        assert_int_equal(rc, SFA_ERR_NUMERIC);
+        assert_true(steps < 60);
+        assert_true(t < 1 && t > 1 - 1e-10); /* up to the collapse, as far as it could go */
+        /* What is left is a sphere of radius 1 - t: it adapts and smooths. */
+        const double volume = measure(s, SFA_MEASURE_VOLUME);
+        assert_ok(s, sfa_smooth(s, 1));
+        assert_ok(s, sfa_adapt(s));
+        assert_near(measure(s, SFA_MEASURE_VOLUME), volume, 1e-9 * volume);
+        sfa_destroy(s);
+        free(vel);
+        mesh_free(&sphere);
+    }
+    alarm(0);
+}
+
+/* A velocity that would carry the surface outside the range the library computes in (every
+ * |coordinate| at most 1e50): refused, naming the vertex, nothing moved. */
+static void step_out_of_the_coordinate_range_refused(void **state)
+{
+    (void)state;
+    for (int base = 0; base <= 1; ++base) {
+        sfa_mesh_data cube = shape_unit_cube(); /* [0, 1e49]^3 */
+        for (int k = 0; k < 24; ++k)
+            cube.xyz[k] *= 1e49;
+        sfa_surface *s = make_surface(&cube, base);
+        double vel[24] = {0};
+        for (int v = 0; v < 8; ++v)
+            vel[3 * v] = 1e50; /* a translation: nothing folds, x = 0 passes 1e50 at t = 1 */
+        assert_ok(s, sfa_set_velocities(s, vel));
+        double taken = -1;
+        char vertex[32];
+        snprintf(vertex, sizeof vertex, "vertex %d", base); /* vertex 0 is the first out at t = 2 */
+        expect_unchanged(s, sfa_move(s, 2.0, &taken), SFA_ERR_NUMERIC, vertex, "outside the range the library computes in");
+        /* Within the range the same velocities move it. */
+        assert_ok(s, sfa_move(s, 0.5, &taken));
+        assert_true(taken == 0.5);
+        sfa_destroy(s);
+        mesh_free(&cube);
+    }
 }
 
 /* ------------------------------------------------------------------ sfa_advect */
@@ -395,6 +482,43 @@ static void advect_step_cut_short_before_a_fold(void **state)
     mesh_free(&grid);
 }
 
+/* The velocity of a surface that shrinks to a point at t = 1, x(t) = (1 - t) x(0), through
+ * it and out again after (RK4 follows it exactly: every stage gives -x(0)). */
+static void collapse_at_one(void *ctx, int32_t n, const double *xyz, double t, double *vel)
+{
+    (void)ctx;
+    const double rate = t == 1 ? 0 : 1 / (1 - t);
+    for (int32_t i = 0; i < 3 * n; ++i)
+        vel[i] = -rate * xyz[i];
+}
+
+static void advect_collapse_stops_with_an_error(void **state)
+{
+    (void)state;
+    alarm(120);
+    sfa_mesh_data sphere = shape_icosphere(2, 1.0);
+    sfa_surface *s = make_surface(&sphere, 0);
+    const double end = 1.7;
+    double t = 0;
+    int steps = 0, rc = SFA_OK;
+    while (t < end && steps < 1000) {
+        double taken = -1;
+        rc = sfa_advect(s, collapse_at_one, NULL, t, end - t, &taken);
+        if (rc != SFA_OK)
+            break;
+        assert_true(taken >= 1e-12 * (end - t));
+        t += taken;
+        ++steps;
+    }
+    print_message("after %d steps, t = %.17g: %s\n", steps, t, sfa_last_error(s));
+    assert_error(s, rc, SFA_ERR_NUMERIC, "triangle", "turns over", "less than 1e-12");
+    assert_true(steps < 60);
+    assert_true(t < 1 && t > 1 - 1e-10);
+    sfa_destroy(s);
+    mesh_free(&sphere);
+    alarm(0);
+}
+
 static void rk4_full_turn_returns_home(void **state)
 {
     (void)state;
@@ -432,11 +556,14 @@ int main(void)
         cmocka_unit_test(step_cut_short_before_a_fold),
         cmocka_unit_test(repeated_sub_steps_never_fold),
         cmocka_unit_test(step_too_small_to_move_is_numeric),
+        cmocka_unit_test(collapsing_bubble_stops_with_an_error),
+        cmocka_unit_test(step_out_of_the_coordinate_range_refused),
         cmocka_unit_test(advect_bad_arguments),
         cmocka_unit_test(advect_non_finite_callback),
         cmocka_unit_test(advect_callback_sees_stages),
         cmocka_unit_test(advect_keeps_velocities),
         cmocka_unit_test(advect_step_cut_short_before_a_fold),
+        cmocka_unit_test(advect_collapse_stops_with_an_error),
         cmocka_unit_test(rk4_full_turn_returns_home),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

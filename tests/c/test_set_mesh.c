@@ -277,6 +277,78 @@ static void non_finite_coordinates(void **state)
         }
 }
 
+/* A tetrahedron with its apex at y = -1e300 over a base at 1e10: every coordinate is finite,
+ * but the products of their differences overflow (infinity minus infinity makes the area
+ * of each side NaN), and it used to be accepted, its measures NaN. */
+static const double overflowing_tetrahedron[] = {1e10, 1e10, 1e10, -1e10, 1e10, 3e10, 0, 1e10, 1e10, 0, -1e300, 0};
+static const int32_t tetrahedron_tris[] = {0, 1, 2, 3, 1, 0, 3, 2, 1, 3, 0, 2};
+
+static void coordinates_outside_the_range(void **state)
+{
+    (void)state;
+    sfa_mesh_data tetrahedron = literal(4, overflowing_tetrahedron, 4, tetrahedron_tris);
+    expect_mesh_rejected(&tetrahedron, 0, SFA_ERR_MESH, "vertex 3", "outside the range the library computes in");
+    expect_mesh_rejected(&tetrahedron, 1, SFA_ERR_MESH, "vertex 4", "outside the range the library computes in");
+    /* Just over the largest coordinate, on each axis and with each sign. */
+    for (int k = 0; k < 3; ++k)
+        for (int sign = -1; sign <= 1; sign += 2) {
+            sfa_mesh_data cube = shape_unit_cube();
+            cube.xyz[3 * 5 + k] = sign * 1.0000001e50;
+            expect_mesh_rejected(&cube, 0, SFA_ERR_MESH, "vertex 5", "outside the range");
+            mesh_free(&cube);
+        }
+    /* A sphere of radius 1e120 (it was accepted, and reported thousands of
+     * self-intersections). */
+    sfa_mesh_data huge = shape_icosphere(2, 1e120);
+    expect_mesh_rejected(&huge, 0, SFA_ERR_MESH, "vertex 0", "outside the range the library computes in");
+    mesh_free(&huge);
+    mesh_free(&tetrahedron);
+}
+
+/* A good sphere at scale 1e-100 is not flat: it is too small to compute with, and the
+ * message says so (it used to say "zero area ... collinear or coincide"). */
+static void mesh_smaller_than_the_range(void **state)
+{
+    (void)state;
+    sfa_mesh_data tiny = shape_icosphere(2, 1e-100);
+    expect_mesh_rejected(&tiny, 0, SFA_ERR_MESH, "spans only", "outside the range the library computes in");
+    sfa_surface *s = loaded_cube();
+    assert_int_equal(sfa_set_mesh(s, tiny.nverts, tiny.xyz, tiny.ntris, tiny.tris, 0), SFA_ERR_MESH);
+    assert_null(strstr(sfa_last_error(s), "zero area"));
+    sfa_destroy(s);
+    mesh_free(&tiny);
+}
+
+/* At both ends of the range a sphere is accepted and measured as the unit sphere is, scaled,
+ * and smoothing and adaptation keep its volume. */
+static void ends_of_the_range_compute_as_the_unit_sphere(void **state)
+{
+    (void)state;
+    sfa_mesh_data unit = shape_jittered_icosphere(2, 1.0, 0.2, 5);
+    sfa_surface *reference = make_surface(&unit, 0);
+    const double volume = measure(reference, SFA_MEASURE_VOLUME), area = measure(reference, SFA_MEASURE_AREA);
+    sfa_destroy(reference);
+    const double scales[] = {0.9e-50, 0.9e50}; /* the sphere spans 1.8e-50 and reaches 0.9e50 */
+    for (int i = 0; i < 2; ++i) {
+        const double r = scales[i];
+        sfa_mesh_data m = mesh_copy(&unit);
+        for (int32_t k = 0; k < 3 * m.nverts; ++k)
+            m.xyz[k] *= r;
+        sfa_surface *s = make_surface(&m, 0);
+        assert_near(measure(s, SFA_MEASURE_VOLUME) / (r * r * r), volume, 1e-13 * volume);
+        assert_near(measure(s, SFA_MEASURE_AREA) / (r * r), area, 1e-13 * area);
+        assert_true(measure(s, SFA_MEASURE_SELF_INTERSECTIONS) == 0);
+        assert_ok(s, sfa_smooth(s, 2));
+        assert_near(measure(s, SFA_MEASURE_VOLUME) / (r * r * r), volume, 1e-12 * volume);
+        assert_ok(s, sfa_adapt(s));
+        assert_near(measure(s, SFA_MEASURE_VOLUME) / (r * r * r), volume, 1e-12 * volume);
+        assert_true(measure(s, SFA_MEASURE_SELF_INTERSECTIONS) == 0);
+        sfa_destroy(s);
+        mesh_free(&m);
+    }
+    mesh_free(&unit);
+}
+
 static void index_out_of_range(void **state)
 {
     (void)state;
@@ -515,6 +587,9 @@ int main(void)
         cmocka_unit_test(failure_on_an_empty_surface_keeps_it_empty),
         cmocka_unit_test(no_triangles),
         cmocka_unit_test(non_finite_coordinates),
+        cmocka_unit_test(coordinates_outside_the_range),
+        cmocka_unit_test(mesh_smaller_than_the_range),
+        cmocka_unit_test(ends_of_the_range_compute_as_the_unit_sphere),
         cmocka_unit_test(index_out_of_range),
         cmocka_unit_test(triangle_repeating_a_vertex),
         cmocka_unit_test(zero_area_triangle),

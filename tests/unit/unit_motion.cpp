@@ -63,6 +63,46 @@ void faster_apex_folds_sooner(void **)
     assert_float_equal(first_fold_time(mesh, {Vec3::Zero(), Vec3::Zero(), Vec3(1, -4, 0)}), 0.25, 1e-15);
 }
 
+// The fold time does not depend on the size of the triangle or of its velocities: a
+// triangle 1e-100 across whose apex crosses its base at 1e-100 per unit time folds at
+// t = 1 as the unit one does (its squared normal, 1e-400, used to underflow to 0 and the
+// "safe step" with it), and so do triangles up to the largest coordinates with velocities
+// from 1e-200 to 1e200 scaled alike. Scaled by powers of two, to the last bit.
+void fold_time_is_the_same_at_every_scale(void **)
+{
+    const Vec3 e1(1, 0, 0), e2(0.3, 1, 0), d1 = Vec3::Zero(), d2(0.1, -1, 0.2);
+    const double unit = triangle_fold_time(e1, e2, d1, d2);
+    assert_float_equal(unit, 1.0, 1e-15);
+    for (double length : {1e-100, 1e-50, 1.0, 1e50})
+        for (double speed : {1e-200, 1e-100, 1.0, 1e100, 1e200}) {
+            const double t = triangle_fold_time(length * e1, length * e2, speed * d1, speed * d2);
+            const double expected = length / speed; // from 1e-300 to 1e250: a normal double
+            if (!(std::abs(t / expected - 1) <= 1e-15))
+                fail_msg("length %g, speed %g: fold at %.17g, expected %.17g", length, speed, t, expected);
+        }
+    for (int k : {-300, -100, 100, 300})
+        for (int j : {-300, 0, 300}) {
+            const double a = std::ldexp(1.0, k), b = std::ldexp(1.0, j);
+            assert_true(triangle_fold_time(a * e1, a * e2, b * d1, b * d2) == std::ldexp(unit, k - j));
+        }
+    // No relative motion: never; a flat triangle: at once.
+    assert_true(triangle_fold_time(e1, e2, Vec3::Zero(), Vec3::Zero()) == inf);
+    assert_true(triangle_fold_time(e1, 2 * e1, d1, d2) == 0);
+}
+
+// The first fold names its triangle (the lowest of equal times).
+void first_fold_names_the_triangle(void **)
+{
+    TriMesh mesh;
+    mesh.pos = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)};
+    mesh.tri = {Triangle{0, 1, 2}, Triangle{1, 3, 2}};
+    // Vertex 3 moves through the edge (1, 2) at speed 1: triangle 1 flat at t = 1/2.
+    const Fold fold = first_fold(mesh, {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3(-1, -1, 0)});
+    assert_int_equal(fold.triangle, 1);
+    assert_float_equal(fold.time, 0.5, 1e-15);
+    assert_int_equal(first_fold(mesh, std::vector<Vec3>(4, Vec3(1, 2, 3))).triangle, -1);
+}
+
 } // namespace
 
 int main()
@@ -72,6 +112,8 @@ int main()
         cmocka_unit_test(apex_crossing_the_base_folds_when_it_reaches_it),
         cmocka_unit_test(translation_and_stretching_never_fold),
         cmocka_unit_test(faster_apex_folds_sooner),
+        cmocka_unit_test(fold_time_is_the_same_at_every_scale),
+        cmocka_unit_test(first_fold_names_the_triangle),
     };
     return cmocka_run_group_tests_name("unit_motion", tests, nullptr, nullptr);
 }

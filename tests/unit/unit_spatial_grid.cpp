@@ -10,6 +10,7 @@
 #include <cstdarg>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <setjmp.h>
 #include <utility>
 #include <vector>
@@ -224,6 +225,43 @@ void a_query_meets_points_cell_by_cell_in_their_order(void **)
     check_point_order(points, CellFrame{Vec3(-1, -3e5, -1), 0.05}, queries);
 }
 
+// A point whose cell number is no integer (NaN, from a coordinate that overflowed) or no
+// int64_t (beyond 2^63 cells) was converted to int64_t anyway: undefined behaviour, which
+// on x86 gave INT64_MIN for all of them. Now such numbers are clamped to +-2^52, NaN to
+// the lowest, and a grid built of such boxes answers without reading out of its arrays.
+void cells_of_non_finite_or_far_points_are_clamped(void **)
+{
+    const CellFrame frame{Vec3::Zero(), 1e-3};
+    const int64_t last = int64_t{1} << 52;
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    const GridCell far = frame.cell_of(Vec3(1e300, -1e300, inf));
+    assert_true(far[0] == last && far[1] == -last && far[2] == last);
+    const GridCell lost = frame.cell_of(Vec3(nan, 0.0105, -inf));
+    assert_true(lost[0] == -last && lost[1] == 10 && lost[2] == -last);
+    // Near the limit, cells are still numbered exactly.
+    const GridCell near_limit = CellFrame{Vec3::Zero(), 1}.cell_of(Vec3(4503599627370495.0, -4503599627370496.0, -0.5));
+    assert_true(near_limit[0] == last - 1 && near_limit[1] == -last && near_limit[2] == -1);
+
+    // A grid of a few ordinary boxes and one with a NaN corner: its pairs are the ordinary
+    // ones' (the NaN box covers no cell on its NaN axis), and a query with a NaN corner
+    // finds nothing and ends.
+    std::vector<Box> boxes = {{Vec3(0, 0, 0), Vec3(1, 1, 1)}, {Vec3(0.5, 0.5, 0.5), Vec3(2, 2, 2)},
+                              {Vec3(0, 0, 0), Vec3(nan, 1, 1)}};
+    SpatialGrid<int32_t> grid;
+    grid.build(
+        CellFrame{Vec3::Zero(), 0.5}, 3, [&](int32_t m) { return boxes[m]; },
+        [](int32_t m, const GridCell &) { return m; });
+    int32_t pairs = 0;
+    for (size_t b = 0; b < grid.bucket_count(); ++b)
+        grid.for_each_pair_in_bucket(b, [&](int32_t s, int32_t t, uint64_t here) {
+            if (cell_key(first_shared_cell(grid.cells_of(s)[0], grid.cells_of(t)[0])) == here)
+                pairs += s == 0 && t == 1 ? 1 : 100;
+        });
+    assert_int_equal(pairs, 1);
+    assert_false(grid.any_in_cells(grid.frame().cell_of(Vec3(nan, 0, 0)), grid.frame().cell_of(Vec3(nan, 1, 1)),
+                                   [](int32_t, const GridCell &) { return true; }));
+}
+
 } // namespace
 
 int main()
@@ -234,6 +272,7 @@ int main()
         cmocka_unit_test(large_boxes_in_few_buckets_pair_up_as_all_pairs_find),
         cmocka_unit_test(boxes_in_one_cell_pair_up_as_all_pairs_find),
         cmocka_unit_test(a_query_meets_points_cell_by_cell_in_their_order),
+        cmocka_unit_test(cells_of_non_finite_or_far_points_are_clamped),
     };
     return cmocka_run_group_tests_name("unit_spatial_grid", tests, nullptr, nullptr);
 }

@@ -1,0 +1,93 @@
+// Unit tests of the smoothing sweep's re-check of its own moves (§3.2): a move that folds a
+// triangle is not made, and the re-check ends also where a triangle was flat before any
+// move (it used to stop that triangle's corners again and again, for ever).
+#include "adapt/settings.hpp"
+#include "adapt/smooth.hpp"
+#include "mesh/validate.hpp"
+#include "motion/fold_time.hpp"
+
+#include <cstdarg>
+#include <cstddef>
+#include <setjmp.h>
+#include <unistd.h>
+#include <vector>
+
+extern "C" {
+#include <cmocka.h>
+
+#include "support/shapes.h"
+}
+
+using namespace sfa;
+
+namespace {
+
+const FeatureThresholds default_thresholds = feature_thresholds(Parameters());
+const MetricBounds default_bounds = metric_bounds(Parameters());
+
+TriMesh jittered_sphere()
+{
+    sfa_mesh_data m = shape_jittered_icosphere(2, 1.0, 0.3, 11);
+    TriMesh mesh = validated_mesh(MeshInput{m.nverts, m.xyz, m.ntris, m.tris, 0, false});
+    mesh_free(&m);
+    return mesh;
+}
+
+void a_triangle_flat_before_the_sweep_does_not_stop_it(void **)
+{
+    // A hang ends the program (SIGALRM) instead of stalling the run.
+    alarm(60);
+    TriMesh mesh = jittered_sphere();
+    // Vertex c onto vertex a: the two triangles on edge (a, c) are exactly flat before any
+    // move, as a collapsed bubble's are. No move of other vertices unfolds them.
+    const int32_t a = mesh.tri[0][0], c = mesh.tri[0][2];
+    mesh.pos[c] = mesh.pos[a];
+    std::vector<int32_t> flat;
+    for (int32_t t = 0; t < mesh.num_triangles(); ++t)
+        if ((mesh.pos[mesh.tri[t][1]] - mesh.pos[mesh.tri[t][0]])
+                .cross(mesh.pos[mesh.tri[t][2]] - mesh.pos[mesh.tri[t][0]])
+                .squaredNorm() == 0)
+            flat.push_back(t);
+    assert_int_equal(flat.size(), 2);
+
+    const SurfaceAnalysis analysis = analyze_surface(mesh, default_thresholds, default_bounds);
+    const std::vector<Vec3> moved = smoothing_sweep(mesh, analysis);
+    alarm(0);
+
+    // The flat triangles' corners stay; the rest of the surface is smoothed, and no triangle
+    // that moved is folded.
+    for (int32_t t : flat)
+        for (int32_t v : mesh.tri[t])
+            assert_true(moved[v] == mesh.pos[v]);
+    int32_t moving = 0;
+    for (int32_t v = 0; v < mesh.num_vertices(); ++v)
+        moving += moved[v] != mesh.pos[v];
+    print_message("%d of %d vertices moved\n", moving, mesh.num_vertices());
+    assert_true(moving > mesh.num_vertices() / 2);
+    assert_int_equal(first_folded_moved_triangle(mesh, moved), -1);
+}
+
+void only_moved_triangles_count_as_folds(void **)
+{
+    TriMesh mesh = jittered_sphere();
+    const int32_t a = mesh.tri[0][0], c = mesh.tri[0][2];
+    mesh.pos[c] = mesh.pos[a];
+    std::vector<Vec3> moved = mesh.pos;
+    // Nothing moved: the flat triangles are flat, but no move folded them.
+    assert_int_equal(first_folded_triangle(mesh, moved), 0);
+    assert_int_equal(first_folded_moved_triangle(mesh, moved), -1);
+    // A vertex of triangle 0 moves: now it counts.
+    moved[mesh.tri[0][1]] += Vec3(1e-3, 0, 0);
+    assert_int_equal(first_folded_moved_triangle(mesh, moved), 0);
+}
+
+} // namespace
+
+int main()
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(a_triangle_flat_before_the_sweep_does_not_stop_it),
+        cmocka_unit_test(only_moved_triangles_count_as_folds),
+    };
+    return cmocka_run_group_tests(tests, nullptr, nullptr);
+}
