@@ -5,6 +5,7 @@
 #   make check      build and run every test (C, unit, Fortran, plugin, ABI, install, command
 #                   line, sanitizers); what CI runs
 #   make bench      benchmarks, one JSON line per case
+#   make fuzz       FUZZ_SECONDS=60 : each libFuzzer harness for that long (clang)
 #   make doc        the HTML reference (Doxygen; warnings are errors)
 #   make install    PREFIX=/usr/local DESTDIR= : header, libraries, .mod, tool, pkg-config, CMake
 #   make uninstall  PREFIX=/usr/local DESTDIR= : removes exactly what make install put there
@@ -78,7 +79,7 @@ BENCHES          := $(patsubst bench/%.c,build/bench/%,$(sort $(wildcard bench/*
 
 TEST_RPATH := -Wl,-rpath,'$$ORIGIN/../../lib'
 
-.PHONY: all deps deps-check deps-doc test check demo bench doc install uninstall clean abi-check abi-baseline
+.PHONY: all deps deps-check deps-doc test check demo bench doc install uninstall clean abi-check abi-baseline fuzz
 .DEFAULT_GOAL := all
 # Keep object files of pattern-built programs, so that rebuilds are incremental.
 .SECONDARY:
@@ -197,11 +198,43 @@ test: deps-check $(UNIT_TESTS) $(C_TESTS)
 	@OMP_WAIT_POLICY=$${OMP_WAIT_POLICY:-passive} scripts/run-tests.sh $(UNIT_TESTS) $(C_TESTS)
 
 check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE) $(C_EXAMPLE) $(PLUGIN_TEST) $(FIDELITY) $(SAN_TESTS) \
-       $(SAN_UNIT_TESTS)
+       $(SAN_UNIT_TESTS) $(REPLAYS)
 	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) "$(FORTRAN_EXAMPLE) 60" $(C_EXAMPLE) \
 	  "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" \
 	  tests/install/test_install.sh tests/cli/test_features_cli.sh tests/cli/test_remesh_cli.sh tests/cli/test_flows_cli.sh \
-	  tests/cli/test_fidelity.sh $(SAN_TESTS) $(SAN_UNIT_TESTS)
+	  tests/cli/test_fidelity.sh $(SAN_TESTS) $(SAN_UNIT_TESTS) \
+	  $(foreach f,$(FUZZERS),"build/san/tests/replay_$(f) tests/fuzz/corpus/$(f) tests/fuzz/crashes/$(f)")
+
+# ------------------------------------------------------------------ fuzzing
+# libFuzzer harnesses, tests/fuzz/fuzz_*.c: each checks the library's contract after every
+# call (tests/fuzz/contract.h). `make fuzz` builds them against the library instrumented
+# for coverage, with ASan + UBSan, and runs each for FUZZ_SECONDS (default 60) from its
+# committed corpus (tests/fuzz/corpus/NAME), keeping what it finds in build/fuzz/corpus
+# and any crash in build/fuzz/crashes (scripts/fuzz.sh). A crash, once fixed, goes to
+# tests/fuzz/crashes/NAME. `make check` replays both directories in the sanitizer build.
+FUZZERS      := $(patsubst tests/fuzz/%.c,%,$(sort $(wildcard tests/fuzz/fuzz_*.c)))
+FUZZ_FLAGS   := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -O1 -g
+FUZZ_OBJS    := $(LIB_SRCS:%.cpp=build/fuzz/%.o)
+FUZZ_SECONDS ?= 60
+REPLAYS      := $(FUZZERS:%=build/san/tests/replay_%)
+
+build/fuzz/%.o: %.cpp | deps
+	@mkdir -p $(@D)
+	$(SAN_CXX) $(filter-out -O2 $(OPENMP),$(CXXFLAGS)) -Wno-unknown-pragmas -Wno-unused-command-line-argument \
+	  $(FUZZ_FLAGS) -MMD -MP -c $< -o $@
+build/fuzz/%.o: %.c | deps
+	@mkdir -p $(@D)
+	$(SAN_CC) $(filter-out -O2,$(CFLAGS)) $(FUZZ_FLAGS) -DSFA_NO_ALLOC_HOOK -Itests/c -Iapps/surfadapt \
+	  -MMD -MP -c $< -o $@
+build/fuzz/bin/%: build/fuzz/tests/fuzz/%.o $(TEST_SUPPORT:%.c=build/fuzz/%.o) $(FUZZ_OBJS)
+	@mkdir -p $(@D)
+	$(SAN_CXX) -fsanitize=fuzzer,address,undefined -o $@ $^ -lm
+build/san/tests/replay_%: build/san/tests/fuzz/%.o build/san/tests/fuzz/replay.o $(TEST_SUPPORT:%.c=build/san/%.o) \
+                          $(SAN_OBJS)
+	@mkdir -p $(@D)
+	$(SAN_CXX) $(SAN_FLAGS) -o $@ $^ -lm
+fuzz: deps-check $(FUZZERS:%=build/fuzz/bin/%)
+	@scripts/fuzz.sh $(FUZZ_SECONDS) $(FUZZERS)
 
 # ------------------------------------------------------------------ ABI
 # abidiff exit status is a bit set: 4 = the ABI changed (additions), 8 = an incompatible

@@ -284,6 +284,23 @@ static int is_off(const char *path, const char *text)
     return strncmp(p, "OFF", 3) == 0 || strncmp(p, "COFF", 4) == 0 || strncmp(p, "NOFF", 4) == 0;
 }
 
+/* Parses NUL-terminated `text` (modified in place) read from `path`. */
+static int parse(const char *path, char *text, sfa_mesh_data *out, context *c)
+{
+    builder b = {0};
+    const int rc = is_off(path, text) ? read_off(text, &b, c) : read_obj(text, &b, c);
+    if (rc != 0) {
+        free(b.xyz);
+        free(b.tris);
+        return -1;
+    }
+    out->nverts = (int32_t)b.nverts;
+    out->ntris = (int32_t)b.ntris;
+    out->xyz = b.xyz;
+    out->tris = b.tris;
+    return 0;
+}
+
 int mesh_read(const char *path, sfa_mesh_data *out, char *err, size_t err_len)
 {
     context c = {path ? path : "(null)", err, err_len, 0};
@@ -297,19 +314,22 @@ int mesh_read(const char *path, sfa_mesh_data *out, char *err, size_t err_len)
     char *text = slurp(path, &c);
     if (!text)
         return -1;
-    builder b = {0};
-    const int rc = is_off(path, text) ? read_off(text, &b, &c) : read_obj(text, &b, &c);
+    const int rc = parse(path, text, out, &c);
     free(text);
-    if (rc != 0) {
-        free(b.xyz);
-        free(b.tris);
-        return -1;
-    }
-    out->nverts = (int32_t)b.nverts;
-    out->ntris = (int32_t)b.ntris;
-    out->xyz = b.xyz;
-    out->tris = b.tris;
-    return 0;
+    return rc;
+}
+
+int mesh_parse(const char *name, char *text, sfa_mesh_data *out, char *err, size_t err_len)
+{
+    context c = {name ? name : "(null)", err, err_len, 0};
+    if (err && err_len)
+        err[0] = '\0';
+    if (!out)
+        return fail(&c, "no output given");
+    memset(out, 0, sizeof *out);
+    if (!name || !text)
+        return fail(&c, "no name or no text given");
+    return parse(name, text, out, &c);
 }
 
 int mesh_write_obj(const char *path, const sfa_mesh_data *m, const char *comment, char *err, size_t err_len)

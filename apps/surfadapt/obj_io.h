@@ -25,6 +25,10 @@ typedef struct sfa_mesh_data {
  * Returns 0, or -1 with `*out` zeroed and a message in `err` (file and line). */
 int mesh_read(const char *path, sfa_mesh_data *out, char *err, size_t err_len);
 
+/* mesh_read for a file's contents already in memory: `text`, NUL-terminated, is parsed in
+ * place (modified); `name` picks the format as the path does and names it in messages. */
+int mesh_parse(const char *name, char *text, sfa_mesh_data *out, char *err, size_t err_len);
+
 /* Writes `m` to `path` as OBJ: a `# comment` first line if `comment` is not NULL, `v` lines with every coordinate to full double precision
  * (%.17g: read back bit for bit), then 1-based `f` lines. Returns 0, or -1 with a message
  * in `err` (file and the system's reason). */
