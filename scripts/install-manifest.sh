@@ -46,9 +46,12 @@ file 755 bin/surfadapt bin/surfadapt
 template cmake/surfadapt.pc.in lib/pkgconfig/surfadapt.pc
 template cmake/surfadaptConfig.cmake.in lib/cmake/surfadapt/surfadaptConfig.cmake
 template cmake/surfadaptConfigVersion.cmake.in lib/cmake/surfadapt/surfadaptConfigVersion.cmake
+# The terms the whole of it is distributed under (BSD-3-Clause).
+file 644 LICENSE share/doc/surfadapt/LICENSE
 EOF
 }
 
 own_directories() {
   echo lib/cmake/surfadapt
+  echo share/doc/surfadapt
 }
