@@ -58,13 +58,19 @@ const char *const usage =
     "        cell data 'ridge', point data 'rank' (0 smooth, 1 ridge, 2 corner),\n"
     "        'aspect_ratio', 'long_direction' and 'normal' of the anisotropic metric\n"
     "  --help, or --help after any command\n"
-    "        this text\n";
+    "        this text\n"
+    "  --version\n"
+    "        the library's version and ABI version, and its license\n";
 
 int main(int argc, char **argv)
 {
     if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
         std::fputs(usage, argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
+    }
+    if (!std::strcmp(argv[1], "--version")) {
+        std::printf("surfadapt %s (ABI %d), BSD-3-Clause\n", sfa_version_string(), sfa_abi_version());
+        return 0;
     }
     for (int i = 2; i < argc; ++i)
         if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {

@@ -45,5 +45,7 @@ check "a negative edge length is refused" \
 check "... saying what is wrong" grep -q "positive" "$work/err"
 check "an unknown option is refused" sh -c "'$tool' remesh '$work/cube.obj' '$vtk' --bogus 2>/dev/null; [ \$? -eq 2 ]"
 check "missing arguments are refused" sh -c "'$tool' remesh '$work/cube.obj' 2>/dev/null; [ \$? -eq 2 ]"
+check "--version names the version, the ABI and the license" \
+  sh -c "'$tool' --version | grep -Eq '^surfadapt [0-9]+[.][0-9]+[.][0-9]+ [(]ABI 1[)], BSD-3-Clause$'"
 
 finish
