@@ -246,9 +246,10 @@ void triangle_test_agrees_with_exact_arithmetic(void **)
 // Hand-made cases: touching, sharing, degenerate, and the same at every scale.
 void triangles_that_touch_share_or_degenerate(void **)
 {
-    const Vec3 a0(0, 0, 0), a1(1, 0, 0), a2(0, 1, 0);
     for (const int exponent : {0, -150, 150}) {
-        const auto s = [&](double x, double y, double z) { return Vec3(std::ldexp(x, exponent), std::ldexp(y, exponent), std::ldexp(z, exponent)); };
+        const auto s = [&](double x, double y, double z) {
+            return Vec3(std::ldexp(x, exponent), std::ldexp(y, exponent), std::ldexp(z, exponent));
+        };
         const Vec3 A0 = s(0, 0, 0), A1 = s(1, 0, 0), A2 = s(0, 1, 0);
         const auto meet = [&](const Vec3 &b0, const Vec3 &b1, const Vec3 &b2) {
             return triangles_intersect(A0, A1, A2, b0, b1, b2);
@@ -274,9 +275,6 @@ void triangles_that_touch_share_or_degenerate(void **)
         assert_true(triangles_intersect(A0, A1, A1, s(0.5, -1, 0), s(0.5, 1, 0), s(0.5, 1, 0)));
         assert_false(triangles_intersect(A0, A1, A1, s(0.5, -1, 0x1p-60), s(0.5, 1, 0x1p-60), s(0.5, 1, 0x1p-60)));
     }
-    (void)a0;
-    (void)a1;
-    (void)a2;
 }
 
 // The case the old interval test got wrong: nearly coplanar triangles whose boxes are 1e-9
