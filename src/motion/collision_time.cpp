@@ -1,6 +1,6 @@
 #include "motion/collision_time.hpp"
 
-#include "geometry/spatial_grid.hpp"
+#include "geometry/box_pairs.hpp"
 #include "mesh/parallel.hpp"
 
 #include <algorithm>
@@ -152,7 +152,6 @@ Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, 
         return first;
     // The box each triangle sweeps over the step, and cells of about the size of the
     // boxes, so that each box covers a few cells and a cell holds few boxes.
-    using Box = std::array<Vec3, 2>;
     std::vector<Box> swept(static_cast<size_t>(n));
     std::vector<Reach> reach(static_cast<size_t>(n));
     double extent = 0;
@@ -170,52 +169,37 @@ Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, 
         reach[t] = reach_of(mesh.pos[c[0]], mesh.pos[c[1]], mesh.pos[c[2]], velocity[c[0]], velocity[c[1]],
                             velocity[c[2]]);
     }
-    Vec3 lowest = swept[0][0];
-    for (const Box &b : swept)
-        lowest = lowest.cwiseMin(b[0]);
     const double cell = extent / n;
     if (!(cell > 0))
         return first;
-    SpatialGrid<int32_t> grid;
-    grid.build(CellFrame{lowest, cell}, n, [&](int32_t t) { return swept[t]; },
-               [](int32_t t, const GridCell &) { return t; });
 
     std::vector<Approach> per_thread(static_cast<size_t>(loop_threads()), first);
-    const int64_t buckets = static_cast<int64_t>(grid.bucket_count());
-#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 64)
-    for (int64_t b = 0; b < buckets; ++b) {
+    for_each_overlapping_pair(swept, cell, [&](int32_t s, int32_t t) {
         Approach &mine = per_thread[static_cast<size_t>(thread_index())];
-        grid.for_each_pair_in_bucket(static_cast<size_t>(b), [&](int32_t s, int32_t t, uint64_t here) {
-            if (cell_key(first_shared_cell(grid.cells_of(s)[0], grid.cells_of(t)[0])) != here)
-                return; // each pair once
-            const Triangle &p = mesh.tri[s], &q = mesh.tri[t];
-            for (int32_t v : p)
-                if (v == q[0] || v == q[1] || v == q[2])
-                    return; // neighbours: the fold control's concern
-            const Box &box_s = swept[s], &box_t = swept[t];
-            if ((box_s[0] - box_t[1]).maxCoeff() > 0 || (box_t[0] - box_s[1]).maxCoeff() > 0)
-                return; // apart over the whole step
-            if (out_of_reach(reach[s], reach[t], dt))
-                return; // too far apart for how differently they move: most neighbours in a sheet
-            PairMotion m;
-            for (int k = 0; k < 3; ++k) {
-                m.x[k] = mesh.pos[p[k]];
-                m.v[k] = velocity[p[k]];
-                m.x[3 + k] = mesh.pos[q[k]];
-                m.v[3 + k] = velocity[q[k]];
-            }
-            Approach pair = pair_approach(m, mine.time);
-            if (pair.time == 0)
-                return; // they meet or touch already: no plane separates them
-            pair.first = s;
-            pair.second = t;
-            for (int k = 0; k < 3; ++k)
-                pair.size = std::max({pair.size, (m.x[(k + 1) % 3] - m.x[k]).norm(),
-                                      (m.x[3 + (k + 1) % 3] - m.x[3 + k]).norm()});
-            if (earlier(pair, mine))
-                mine = pair;
-        });
-    }
+        const Triangle &p = mesh.tri[s], &q = mesh.tri[t];
+        for (int32_t v : p)
+            if (v == q[0] || v == q[1] || v == q[2])
+                return; // neighbours: the fold control's concern
+        if (out_of_reach(reach[s], reach[t], dt))
+            return; // too far apart for how differently they move: most neighbours in a sheet
+        PairMotion m;
+        for (int k = 0; k < 3; ++k) {
+            m.x[k] = mesh.pos[p[k]];
+            m.v[k] = velocity[p[k]];
+            m.x[3 + k] = mesh.pos[q[k]];
+            m.v[3 + k] = velocity[q[k]];
+        }
+        Approach pair = pair_approach(m, mine.time);
+        if (pair.time == 0)
+            return; // they meet or touch already: no plane separates them
+        pair.first = s;
+        pair.second = t;
+        for (int k = 0; k < 3; ++k)
+            pair.size = std::max({pair.size, (m.x[(k + 1) % 3] - m.x[k]).norm(),
+                                  (m.x[3 + (k + 1) % 3] - m.x[3 + k]).norm()});
+        if (earlier(pair, mine))
+            mine = pair;
+    });
     for (const Approach &a : per_thread)
         if (earlier(a, first))
             first = a;

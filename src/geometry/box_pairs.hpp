@@ -1,0 +1,67 @@
+// Every pair of overlapping boxes, each once: the broad phase of the self-intersection
+// count and of collision-safe motion. Boxes of up to a few cells go into the uniform grid
+// (spatial_grid.hpp); a box larger than that (a long triangle among short ones, a vertex
+// thrown far in one step) would be entered in the cube of its size in cells, millions
+// for one sliver, so it is compared with every other box instead. Time and memory then
+// stay linear in the boxes, plus the number of large boxes times all boxes.
+#pragma once
+
+#include "geometry/spatial_grid.hpp"
+#include "mesh/parallel.hpp"
+
+#include <array>
+#include <vector>
+
+namespace sfa {
+
+using Box = std::array<Vec3, 2>; // lowest and highest corner
+
+inline bool boxes_overlap(const Box &a, const Box &b)
+{
+    return (a[0] - b[1]).maxCoeff() <= 0 && (b[0] - a[1]).maxCoeff() <= 0;
+}
+
+// Calls visit(s, t), s < t, once for every two overlapping boxes, from parallel loops
+// (visit may use thread_index() for its own scratch). `cell` is the grid's cell size,
+// about the size of a typical box. Boxes with a NaN corner overlap nothing.
+template <class Visit>
+void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit &&visit)
+{
+    constexpr double large_span = 16; // cells along an axis that make a box large
+    const int32_t n = static_cast<int32_t>(boxes.size());
+    std::vector<int32_t> small, large;
+    std::vector<char> is_large(static_cast<size_t>(n), 0);
+    for (int32_t t = 0; t < n; ++t) {
+        const bool fits = (boxes[t][1] - boxes[t][0]).maxCoeff() <= large_span * cell; // false for NaN
+        (fits ? small : large).push_back(t);
+        is_large[t] = !fits;
+    }
+    if (small.size() >= 2) {
+        Vec3 lowest = boxes[small[0]][0];
+        for (int32_t t : small)
+            lowest = lowest.cwiseMin(boxes[t][0]);
+        SpatialGrid<int32_t> grid; // entry m is box small[m], in increasing order
+        grid.build(CellFrame{lowest, cell}, static_cast<int32_t>(small.size()),
+                   [&](int32_t m) { return boxes[small[m]]; }, [](int32_t m, const GridCell &) { return m; });
+        const int64_t buckets = static_cast<int64_t>(grid.bucket_count());
+#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 64)
+        for (int64_t b = 0; b < buckets; ++b)
+            grid.for_each_pair_in_bucket(static_cast<size_t>(b), [&](int32_t m, int32_t k, uint64_t here) {
+                // Each pair once: in the first cell both boxes cover.
+                if (cell_key(first_shared_cell(grid.cells_of(m)[0], grid.cells_of(k)[0])) != here)
+                    return;
+                if (boxes_overlap(boxes[small[m]], boxes[small[k]]))
+                    visit(small[m], small[k]);
+            });
+    }
+    const int64_t count = static_cast<int64_t>(large.size());
+#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 1)
+    for (int64_t i = 0; i < count; ++i) {
+        const int32_t s = large[static_cast<size_t>(i)];
+        for (int32_t t = 0; t < n; ++t)
+            if (t != s && !(is_large[t] && t < s) && boxes_overlap(boxes[s], boxes[t]))
+                visit(std::min(s, t), std::max(s, t));
+    }
+}
+
+} // namespace sfa
