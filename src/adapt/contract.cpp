@@ -5,6 +5,7 @@
 #include "geometry/edge_neighbourhood.hpp"
 #include "geometry/local_fit.hpp"
 #include "geometry/quadric_error.hpp"
+#include "geometry/surface_side.hpp"
 #include "geometry/triangle_intersection.hpp"
 
 #include <algorithm>
@@ -75,8 +76,14 @@ bool shortness_applies(const TriMesh &mesh, int32_t h, const CarriedFeatures &fe
 }
 
 // True if moving both ends of h to `merged` keeps every surviving face's orientation
-// (turned by at most 60 degrees) and shape (not nearly flat).
-bool faces_survive(const TriMesh &mesh, int32_t h, const Vec3 &merged)
+// (turned by at most 60 degrees, and facing the side the surface faces at each smooth
+// corner where it did) and shape (not nearly flat). The 60 degrees are relative to the
+// face as this contraction finds it: a chain of contractions (and the splits and sweeps
+// between them) could turn a face over step by step, as on a shallow cone of 1000
+// slivers (issue 18); the side the surface faces at the corners bounds the total
+// (surface_side.hpp).
+bool faces_survive(const TriMesh &mesh, const SurfaceAnalysis &analysis, const CarriedFeatures &features, int32_t h,
+                   const Vec3 &merged)
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
     bool ok = true;
@@ -95,6 +102,8 @@ bool faces_survive(const TriMesh &mesh, int32_t h, const Vec3 &merged)
         // height / longest = |after| / longest^2
         ok = ok && after.dot(before) >= cos_max_face_turn * after.norm() * before.norm() &&
              after.norm() >= min_height_ratio * longest2;
+        for (int32_t c : t) // a and b by their own normals
+            ok = ok && !turns_at_corner(mesh, analysis.fan_area, features.rank(c), c, before, after);
     });
     return ok;
 }
@@ -220,7 +229,7 @@ bool contraction_allowed(const TriMesh &mesh, const SurfaceAnalysis &analysis, i
     return wants_contraction(mesh, analysis, h, settings, coarsens) && collapse_keeps_manifold(mesh, h) &&
            merged_position(mesh, analysis, h, features, constraints,
                            settings.contract_short_ratio * settings.desired_length, merged) &&
-           faces_survive(mesh, h, merged) &&
+           faces_survive(mesh, analysis, features, h, merged) &&
            stays_clear_of_neighbours(mesh, h, merged, nearby);
 }
 

@@ -1,6 +1,7 @@
 #include "adapt/flip.hpp"
 
 #include "geometry/angles.hpp"
+#include "geometry/surface_side.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -32,12 +33,30 @@ bool within_dihedral(const Vec3 &n0, const Vec3 &n1, double cos_max_dihedral)
     return n0.dot(n1) >= cos_max_dihedral * n0.norm() * n1.norm();
 }
 
+// True if a new face of the flip turns away from the side the surface faces at one of the
+// quad's smooth corners where an old face with that corner faced it (surface_side.hpp).
+// The dihedral bounds of judge are relative to the quad as the flip finds it: over
+// slivers, whose normals an earlier change may have tilted steeply, they leave room to
+// turn a face the rest of the way over.
+bool flip_turns_from_surface(const TriMesh &mesh, const FlipQuad &quad, const Vec3 &old0, const Vec3 &old1,
+                             const Vec3 &new0, const Vec3 &new1, const std::vector<Vec3> &fan_area,
+                             const CarriedFeatures &features)
+{
+    const auto turns = [&](int32_t c, const Vec3 &before, const Vec3 &after) {
+        return turns_at_corner(mesh, fan_area, features.rank(c), c, before, after);
+    };
+    // old0 = (a, b, p), old1 = (b, a, q); new0 = (q, p, a), new1 = (p, q, b).
+    return turns(quad.a, old0, new0) || turns(quad.a, old1, new0) || turns(quad.b, old0, new1) ||
+           turns(quad.b, old1, new1) || turns(quad.p, old0, new0) || turns(quad.p, old0, new1) ||
+           turns(quad.q, old1, new0) || turns(quad.q, old1, new1);
+}
+
 // Should interior, unlocked half-edge h be flipped? The §3.3 test: the frame and metric of
 // the summed quadrics of the quad's four vertices (no vertex is favoured), the points mapped
 // into that metric space about their centroid, and the Delaunay criterion there: flip when
 // the angles opposite the edge sum to more than pi.
-Verdict judge(const TriMesh &mesh, int32_t h, const std::vector<Mat3> &quadric, const FlipSettings &settings,
-              double cos_max_dihedral)
+Verdict judge(const TriMesh &mesh, int32_t h, const std::vector<Mat3> &quadric, const std::vector<Vec3> &fan_area,
+              const CarriedFeatures &features, const FlipSettings &settings, double cos_max_dihedral)
 {
     const Verdict keep{false, 0};
     const FlipQuad quad = flip_quad(mesh, h);
@@ -75,7 +94,12 @@ Verdict judge(const TriMesh &mesh, int32_t h, const std::vector<Mat3> &quadric, 
     if ((ma - mp).dot(mb - mp) > 0 && (mb - mq).dot(ma - mq) > 0)
         return keep;
     const double angle_p = angle_at(mp, ma, mb), angle_q = angle_at(mq, mb, ma);
-    return {angle_p + angle_q > pi + delaunay_slack, std::max(angle_p, angle_q)};
+    if (!(angle_p + angle_q > pi + delaunay_slack))
+        return keep;
+    // Checked last: only for the few edges that would flip.
+    if (flip_turns_from_surface(mesh, quad, old0, old1, new0, new1, fan_area, features))
+        return keep;
+    return {true, std::max(angle_p, angle_q)};
 }
 
 // Keeps the quadrics exact through a flip: the two triangles' terms leave their old
@@ -111,7 +135,7 @@ public:
     Flipping(const PassContext &context, const SurfaceAnalysis &analysis, const FlipSettings &settings)
         : mesh_(context.edit.mesh()), features_(context.features), constraints_(context.constraints),
           guard_(context.guard), settings_(settings),
-          cos_max_dihedral_(std::cos(settings.max_dihedral)), quadric_(analysis.quadric)
+          cos_max_dihedral_(std::cos(settings.max_dihedral)), quadric_(analysis.quadric), fan_area_(analysis.fan_area)
     {
     }
 
@@ -121,7 +145,7 @@ public:
             return false;
         // The manifold test walks a fan through memory far apart: only for the few edges
         // that would flip.
-        const Verdict verdict = judge(mesh_, h, quadric_, settings_, cos_max_dihedral_);
+        const Verdict verdict = judge(mesh_, h, quadric_, fan_area_, features_, settings_, cos_max_dihedral_);
         if (!verdict.flip || !flip_keeps_manifold(mesh_, h))
             return false;
         order = -verdict.max_opposite_angle; // largest first
@@ -131,7 +155,7 @@ public:
     bool plan(int32_t h, Plan &) const
     {
         return !features_.is_ridge(h) && !constraints_.required(h) && flip_keeps_manifold(mesh_, h) &&
-               judge(mesh_, h, quadric_, settings_, cos_max_dihedral_).flip;
+               judge(mesh_, h, quadric_, fan_area_, features_, settings_, cos_max_dihedral_).flip;
     }
     bool may_have_changed(int32_t h, const ChangedVertices &changed) const
     {
@@ -157,6 +181,7 @@ private:
     const FlipSettings &settings_;
     const double cos_max_dihedral_;
     std::vector<Mat3> quadric_; // the analysis's, kept exact through the pass's flips
+    const std::vector<Vec3> &fan_area_; // the analysis's, as the pass found it
 };
 
 } // namespace

@@ -3,9 +3,9 @@
 #include "geometry/circle.hpp"
 #include "geometry/crossing_guard.hpp"
 #include "geometry/local_fit.hpp"
+#include "geometry/surface_side.hpp"
 #include "mesh/error.hpp"
 #include "mesh/parallel.hpp"
-#include "motion/fold_time.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -106,6 +106,33 @@ Vec3 denoising_motion(const TriMesh &mesh, const std::vector<Vec3> &umbrella, co
     return weight / 4 * normal.dot(umbrella[v] - mean / count) * normal;
 }
 
+// The first triangle (or -1) that the sweep folds or turns from the surface: one whose
+// normal at `moved` no longer points along its normal before the sweep (flat or turned
+// over, as first_folded_triangle of fold_time.hpp), or one that faced the side the surface
+// faces at one of its smooth corners and no longer does (surface_side.hpp). The first
+// bounds each face's turn within one sweep by a right angle, relative to the face as the
+// sweep found it; a sliver that splits, contractions or earlier sweeps had tilted steeply
+// could be turned the rest of the way over (issue 18: a shallow cone of 200 slivers was
+// left with faces upside down around its apex after one pass). One loop for both: the
+// check runs again after every round of stopped vertices.
+int32_t first_folded_or_turned(const TriMesh &mesh, const SurfaceAnalysis &analysis, const std::vector<Vec3> &moved)
+{
+    const int32_t first = first_where(mesh.num_triangles(), [&](int32_t f) {
+        const Triangle &t = mesh.tri[f];
+        const Vec3 before = (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]);
+        const Vec3 after = (moved[t[1]] - moved[t[0]]).cross(moved[t[2]] - moved[t[0]]);
+        if (moved[t[0]] == mesh.pos[t[0]] && moved[t[1]] == mesh.pos[t[1]] && moved[t[2]] == mesh.pos[t[2]])
+            return false; // as it was: whatever it is, not this move's doing
+        if (!(before.dot(after) > 0))
+            return true;
+        for (int32_t c : t)
+            if (turns_at_corner(mesh, analysis.fan_area, analysis.features.rank[c], c, before, after))
+                return true;
+        return false;
+    });
+    return first < mesh.num_triangles() ? first : -1;
+}
+
 } // namespace
 
 std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &analysis, double denoise,
@@ -129,12 +156,13 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
         }
     }
 
-    // Jacobi moves can still fold a triangle where neighbours move towards each other, or
-    // carry a face through the other side of a sheet thinner than an edge: the vertices of
-    // such a face stay where they were in this sweep. Only faces with a corner that moves
-    // count: a face flat before the sweep (a collapsed bubble, round-off) is no fold of this
-    // move, and stopping its corners would not unfold it. So each round that goes on stops
-    // at least one vertex that moved, and there are at most n + 1 rounds.
+    // Jacobi moves can still fold a triangle where neighbours move towards each other, turn
+    // one over against the surface, or carry a face through the other side of a sheet
+    // thinner than an edge: the vertices of such a face stay where they were in this sweep.
+    // Only faces with a corner that moves count: a face flat before the sweep (a collapsed
+    // bubble, round-off) is no fold of this move, and stopping its corners would not unfold
+    // it. So each round that goes on stops at least one vertex that moved, and there are at
+    // most n + 1 rounds.
     std::vector<Vec3> moved(n);
     const auto moves = [&](const Triangle &t) {
         return motion[t[0]] != Vec3::Zero() || motion[t[1]] != Vec3::Zero() || motion[t[2]] != Vec3::Zero();
@@ -145,7 +173,7 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
         for (int32_t v = 0; v < n; ++v)
             moved[v] = mesh.pos[v] + motion[v];
-        const int32_t folded = first_folded_moved_triangle(mesh, moved);
+        const int32_t folded = first_folded_or_turned(mesh, analysis, moved);
         if (folded >= 0) {
             for (int32_t v : mesh.tri[folded])
                 motion[v] = Vec3::Zero();

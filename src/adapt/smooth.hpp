@@ -25,8 +25,9 @@ namespace sfa {
 // then round the body off). The caller's volume restoration gives back the volume the
 // noise took with it.
 //
-// With a guard, a move that would carry a face through a watched face is not made (the
-// face's corners stay), nor one that folds a face.
+// A move that folds a face, or turns it from the side the surface faces at a smooth corner
+// (surface_side.hpp), is not made (the face's corners stay); with a guard, nor one that
+// would carry a face through a watched face.
 std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &analysis, double denoise = 0,
                                   CrossingGuard *guard = nullptr);
 

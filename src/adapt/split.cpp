@@ -5,6 +5,7 @@
 #include "geometry/edge_neighbourhood.hpp"
 #include "geometry/local_fit.hpp"
 #include "geometry/quadric_error.hpp"
+#include "geometry/surface_side.hpp"
 
 #include <algorithm>
 
@@ -21,8 +22,12 @@ bool wants_split(const EdgeNeighbourhood &n, const RepairSettings &settings)
 }
 
 // True if putting the new vertex at x turns no part of the edge's triangles over: each
-// half of triangle (a, b, p) keeps the triangle's orientation.
-bool halves_keep_orientation(const TriMesh &mesh, int32_t h, const Vec3 &x)
+// half of triangle (a, b, p) keeps the triangle's orientation, and faces the side the
+// surface faces at its smooth corners where the triangle did (surface_side.hpp: the
+// halves of a sliver can each turn by almost a right angle, and an earlier change may
+// have tilted the sliver already). The centre, the fallback, keeps both.
+bool halves_keep_orientation(const TriMesh &mesh, const SurfaceAnalysis &analysis, const CarriedFeatures &features,
+                             int32_t h, const Vec3 &x)
 {
     bool ok = true;
     mesh.for_each_face_of_edge(h, [&](int32_t f) {
@@ -35,7 +40,10 @@ bool halves_keep_orientation(const TriMesh &mesh, int32_t h, const Vec3 &x)
                 continue;
             Vec3 q[3] = {p0, p1, p2};
             q[k] = x;
-            ok = ok && (q[1] - q[0]).cross(q[2] - q[0]).dot(normal) > 0;
+            const Vec3 half = (q[1] - q[0]).cross(q[2] - q[0]);
+            ok = ok && half.dot(normal) > 0;
+            for (int j = 0; j < 3; ++j) // the half's other corners
+                ok = ok && (j == k || !turns_at_corner(mesh, analysis.fan_area, features.rank(t[j]), t[j], normal, half));
         }
     });
     return ok;
@@ -59,7 +67,7 @@ Vec3 new_vertex_position(const TriMesh &mesh, const SurfaceAnalysis &analysis, i
     if (on_ridge) {
         const Vec3 on_curve =
             curve_midpoint(features.next_along(mesh, a, b), mesh.pos[a], mesh.pos[b], features.next_along(mesh, b, a));
-        return halves_keep_orientation(mesh, h, on_curve) ? on_curve : centre;
+        return halves_keep_orientation(mesh, analysis, features, h, on_curve) ? on_curve : centre;
     }
     const double max_shift = max_shift_ratio * (mesh.pos[b] - mesh.pos[a]).norm();
     const auto fits = [&](int32_t end) {
@@ -67,7 +75,7 @@ Vec3 new_vertex_position(const TriMesh &mesh, const SurfaceAnalysis &analysis, i
     };
     Vec3 fitted;
     if (onto_fitted_surface_of_ends(mesh, analysis.metric, a, fits(a), b, fits(b), centre, max_shift, fitted))
-        return halves_keep_orientation(mesh, h, fitted) ? fitted : centre;
+        return halves_keep_orientation(mesh, analysis, features, h, fitted) ? fitted : centre;
     Vec3 normal = Vec3::Zero();
     mesh.for_each_face_of_edge(h, [&](int32_t f) {
         const Triangle &t = mesh.tri[f];
@@ -84,7 +92,7 @@ Vec3 new_vertex_position(const TriMesh &mesh, const SurfaceAnalysis &analysis, i
                     mesh.for_each_outgoing(end, [&](int32_t g) { visit(TriMesh::face(g)); });
         },
         centre, normal.normalized(), max_shift);
-    return halves_keep_orientation(mesh, h, placed) ? placed : centre;
+    return halves_keep_orientation(mesh, analysis, features, h, placed) ? placed : centre;
 }
 
 // True if a half of the edge's faces, with the new vertex at `position`, would pass

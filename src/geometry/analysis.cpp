@@ -17,6 +17,7 @@ void analyze_vertex(const TriMesh &mesh, int32_t v, AreaVector &&area_vector, We
     mesh.for_each_outgoing(v, [&](int32_t h) { outward += area_vector(TriMesh::face(h)); });
     analysis.eigen[v] = decompose(analysis.quadric[v]);
     analysis.metric[v] = vertex_metric(analysis.eigen[v], outward, bounds);
+    analysis.fan_area[v] = outward;
 }
 
 void geometry_of(const TriMesh &mesh, const std::vector<Vec3> &area_vectors, const MetricBounds &bounds,
@@ -26,6 +27,7 @@ void geometry_of(const TriMesh &mesh, const std::vector<Vec3> &area_vectors, con
     analysis.quadric.resize(mesh.pos.size());
     analysis.eigen.resize(mesh.pos.size());
     analysis.metric.resize(mesh.pos.size());
+    analysis.fan_area.resize(mesh.pos.size());
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < mesh.num_vertices(); ++v)
         analyze_vertex(
@@ -68,6 +70,7 @@ void update_geometry(const TriMesh &mesh, const std::vector<char> &changed, cons
     analysis.quadric.resize(mesh.pos.size());
     analysis.eigen.resize(mesh.pos.size());
     analysis.metric.resize(mesh.pos.size());
+    analysis.fan_area.resize(mesh.pos.size());
     const auto area_vector = [&](int32_t t) { return face_area_vector(mesh, t); };
 #pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 1024)
     for (int32_t v = 0; v < mesh.num_vertices(); ++v)
@@ -91,6 +94,7 @@ void renumber_vertices(SurfaceAnalysis &analysis, const std::vector<int32_t> &ve
     renumbered(analysis.quadric);
     renumbered(analysis.eigen);
     renumbered(analysis.metric);
+    renumbered(analysis.fan_area);
 }
 
 } // namespace sfa

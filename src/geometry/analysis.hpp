@@ -12,6 +12,10 @@ struct SurfaceAnalysis {
     std::vector<QuadricEigen> eigen;
     Features features;
     std::vector<VertexMetric> metric;
+    // Per vertex: the sum of its faces' area vectors, the side the surface faces there
+    // (surface_side.hpp). Around an interior vertex it is the vector area of the closed
+    // loop of its neighbours, whatever the shape of the faces between.
+    std::vector<Vec3> fan_area;
 };
 
 SurfaceAnalysis analyze_surface(const TriMesh &mesh, const FeatureThresholds &thresholds, const MetricBounds &bounds);

@@ -1,7 +1,7 @@
 #include "motion/safe_motion.hpp"
 
 #include "mesh/error.hpp"
-#include "motion/collision_time.hpp"
+#include "geometry/collision_time.hpp"
 
 #include <algorithm>
 #include <cstdio>

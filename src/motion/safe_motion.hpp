@@ -1,6 +1,6 @@
 // Motion that never lets the surface touch itself (SFA_PARAM_COLLISION_SAFE_MOTION): the
 // explicit and Runge-Kutta steps of sfa_move and sfa_advect, cut further so that no two
-// triangles that share no vertex meet during the step (motion/collision_time.hpp).
+// triangles that share no vertex meet during the step (geometry/collision_time.hpp).
 #pragma once
 
 #include "motion/rk4_step.hpp"

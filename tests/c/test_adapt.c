@@ -115,6 +115,77 @@ static void sphere_at_its_own_edge_length_gets_good_angles_and_keeps_volume(void
     sfa_destroy(s);
 }
 
+/* A shallow open fan (issue 18): the apex (0, 0, 0.1) joined to n vertices on the unit
+ * circle at z = 0 by n slivers, every normal pointing up. The cone is so flat that the apex
+ * is a smooth vertex of valence n. */
+static sfa_mesh_data shallow_fan(int32_t n)
+{
+    sfa_mesh_data m;
+    m.nverts = n + 1;
+    m.ntris = n;
+    m.xyz = malloc(sizeof(double) * 3 * (size_t)m.nverts);
+    m.tris = malloc(sizeof(int32_t) * 3 * (size_t)m.ntris);
+    assert_non_null(m.xyz);
+    assert_non_null(m.tris);
+    m.xyz[0] = 0;
+    m.xyz[1] = 0;
+    m.xyz[2] = 0.1;
+    for (int32_t k = 0; k < n; ++k) {
+        const double angle = 2 * 3.14159265358979323846 * k / n;
+        m.xyz[3 * (k + 1)] = cos(angle);
+        m.xyz[3 * (k + 1) + 1] = sin(angle);
+        m.xyz[3 * (k + 1) + 2] = 0;
+        m.tris[3 * k] = 0;
+        m.tris[3 * k + 1] = 1 + k;
+        m.tris[3 * k + 2] = 1 + (k + 1) % n;
+    }
+    return m;
+}
+
+/* The number of triangles whose normal does not point up (z <= 0): turned over against
+ * the fan, which is a graph over the plane z = 0. */
+static int32_t triangles_facing_down(const sfa_mesh_data *m)
+{
+    int32_t down = 0;
+    for (int32_t t = 0; t < m->ntris; ++t) {
+        const double *a = m->xyz + 3 * m->tris[3 * t], *b = m->xyz + 3 * m->tris[3 * t + 1],
+                     *c = m->xyz + 3 * m->tris[3 * t + 2];
+        const double normal_z = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        down += !(normal_z > 0);
+    }
+    return down;
+}
+
+/* The shallow fan of 200 and of 1000 slivers adapted three times at l = 0.05: no triangle
+ * turns over and the surface never crosses itself. Each operation bounded a face's turn
+ * only relative to the face just before it, and a split, contractions and sweeps turned
+ * slivers around the apex over one after another: 12 of 242 triangles faced down after
+ * one pass at n = 200, and the fan crossed itself in 93 pairs (1,349 at n = 1000). */
+static void shallow_fan_is_never_turned_over_nor_crosses_itself(void **state)
+{
+    (void)state;
+    const int32_t sizes[] = {200, 1000};
+    for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; ++k) {
+        sfa_mesh_data m = shallow_fan(sizes[k]);
+        sfa_surface *s = make_surface(&m, 0);
+        assert_int_equal(sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, 0.05), SFA_OK);
+        for (int call = 0; call < 3; ++call) {
+            assert_ok(s, sfa_adapt(s));
+            sfa_mesh_data out = read_back(s);
+            const int32_t down = triangles_facing_down(&out);
+            const double crossings = measure(s, SFA_MEASURE_SELF_INTERSECTIONS);
+            print_message("fan of %d, call %d: %d triangles, %d facing down, %g crossing pairs, angles %.1f..%.1f\n",
+                          sizes[k], call, out.ntris, down, crossings, measure(s, SFA_MEASURE_MIN_ANGLE),
+                          measure(s, SFA_MEASURE_MAX_ANGLE));
+            assert_int_equal(down, 0);
+            assert_true(crossings == 0);
+            mesh_free(&out);
+        }
+        mesh_free(&m);
+        sfa_destroy(s);
+    }
+}
+
 /* A blade 1 x 1 x 0.004 adapted at l = 0.1: its rims are two ridge curves 0.004 apart,
  * nearer than the 0.01 (r l) at which feature vertices count as one feature, the way the
  * vortex flow squeezes a sheet's rim into a cusp. The rims merge instead of leaving
@@ -549,6 +620,7 @@ int main(void)
         cmocka_unit_test(sphere_at_its_own_edge_length_gets_good_angles_and_keeps_volume),
         cmocka_unit_test(anisotropic_meshes_are_as_close_to_the_surface_with_as_many_vertices),
         cmocka_unit_test(ridge_curves_nearer_than_r_l_merge_instead_of_leaving_needles),
+        cmocka_unit_test(shallow_fan_is_never_turned_over_nor_crosses_itself),
         cmocka_unit_test(fandisk_keeps_its_features_and_volume),
         cmocka_unit_test(spot_keeps_its_volume_and_triangle_quality),
         cmocka_unit_test(nothing_lost_when_memory_runs_out),

@@ -76,6 +76,33 @@ static inline void fuzz_check_call(const sfa_surface *s, int rc, const snapshot 
         snapshot_free(&before_);                                                                                       \
     } while (0)
 
+/* The number of pairs of triangles that cross (SFA_MEASURE_SELF_INTERSECTIONS). */
+static inline double fuzz_crossings(const sfa_surface *s)
+{
+    double count = 0;
+    FUZZ_REQUIRE(sfa_measure(s, SFA_MEASURE_SELF_INTERSECTIONS, &count) == SFA_OK, "sfa_measure: %s",
+                 sfa_last_error(s));
+    return count;
+}
+
+/* Runs `call`, a smoothing or adaptation, checks it, and, if it succeeded on a surface
+ * that did not cross itself, that it does not now: no operation may return SFA_OK with a
+ * surface passing through itself that did not before (unless the host switched off the
+ * check that keeps it so, SFA_PARAM_CROSSING_GUARD). */
+#define FUZZ_REMESH(s, call)                                                                                           \
+    do {                                                                                                               \
+        double guard_ = 1;                                                                                             \
+        sfa_get_param((s), SFA_PARAM_CROSSING_GUARD, &guard_);                                                         \
+        const double crossings_before_ = guard_ != 0 ? fuzz_crossings(s) : -1;                                         \
+        snapshot before_;                                                                                              \
+        snapshot_take((s), &before_);                                                                                  \
+        const int rc_ = (call);                                                                                        \
+        fuzz_check_call((s), rc_, &before_, #call);                                                                    \
+        snapshot_free(&before_);                                                                                       \
+        if (rc_ == SFA_OK && crossings_before_ == 0)                                                                   \
+            FUZZ_REQUIRE(fuzz_crossings(s) == 0, "%s returned SFA_OK and left the surface crossing itself", #call); \
+    } while (0)
+
 /* Every read-only query of a surface, each checked. */
 static inline void fuzz_query_everything(sfa_surface *s)
 {

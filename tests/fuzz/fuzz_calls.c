@@ -88,10 +88,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             FUZZ_CALL(s, sfa_advect(s, flow, (void *)&kind, pick_value(&in), pick_value(&in), &dt_taken));
             break;
         }
-        case 4: FUZZ_CALL(s, sfa_smooth(s, (int32_t)(fuzz_byte(&in) % 5) - 1)); break;
+        case 4: FUZZ_REMESH(s, sfa_smooth(s, (int32_t)(fuzz_byte(&in) % 5) - 1)); break;
         case 5:
             if (nv < 200)
-                FUZZ_CALL(s, sfa_adapt(s));
+                FUZZ_REMESH(s, sfa_adapt(s));
             break;
         case 6: FUZZ_CALL(s, sfa_add_field_checked(s, n, 1 + fuzz_byte(&in) % 3, values, &id)); break;
         case 7: FUZZ_CALL(s, sfa_add_face_field_checked(s, nf, 1, values, &id)); break;

@@ -6,7 +6,7 @@
 // any number of threads.
 #include "geometry/triangle_intersection.hpp"
 #include "mesh/parallel.hpp"
-#include "motion/collision_time.hpp"
+#include "geometry/collision_time.hpp"
 
 #include <cmath>
 #include <cstdarg>

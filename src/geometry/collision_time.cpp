@@ -1,4 +1,4 @@
-#include "motion/collision_time.hpp"
+#include "geometry/collision_time.hpp"
 
 #include "geometry/box_pairs.hpp"
 #include "mesh/parallel.hpp"
