@@ -2,6 +2,7 @@
 
 #include "geometry/collision_time.hpp"
 #include "geometry/measures.hpp"
+#include "geometry/overlap.hpp"
 #include "mesh/parallel.hpp"
 #include "motion/fold_time.hpp"
 
@@ -57,28 +58,30 @@ namespace {
 // An offset moves every smooth vertex of a component by the same distance along its
 // normal. Where the component is thinner than twice that (a sheet squashed flat, a drop
 // pressed against another), that carries one side through the other without folding any
-// face. Offsets of more than a thousandth of the mean edge are therefore certified, as
-// collision-safe motion is (geometry/collision_time.hpp): every pair of triangles that
-// share no vertex must keep half its gap over the offset, or the components of the pair
-// keep their shapes. Each round leaves at least one more component as it was. The usual
-// offsets (1e-5 of an edge on the paper's flows) are far below the threshold and cost
-// nothing.
-void keep_clear_of_other_sheets(const TriMesh &mesh, const std::vector<int32_t> &label, std::vector<Vec3> &moved)
+// face. An offset of more than a hundredth of the component's mean thickness (its volume
+// over half its area) is therefore certified, as collision-safe motion is
+// (geometry/collision_time.hpp): every pair of triangles that share no vertex must keep
+// half its gap over the offset, or the components of the pair keep their shapes. Each
+// round leaves at least one more component as it was. The usual offsets (some 1e-5 of
+// the thickness on the paper's flows) stay below that and cost nothing.
+void keep_clear_of_other_sheets(const TriMesh &mesh, const std::vector<int32_t> &label,
+                                const std::vector<double> &volume, std::vector<Vec3> &moved)
 {
-    const int32_t n = mesh.num_vertices(), t = mesh.num_triangles();
-    if (t == 0)
-        return;
-    double largest = 0, edge = 0;
-    for (int32_t v = 0; v < n; ++v)
-        largest = std::max(largest, (moved[v] - mesh.pos[v]).norm());
+    const int32_t n = mesh.num_vertices(), count = static_cast<int32_t>(volume.size());
+    std::vector<double> area(count, 0), largest(count, 0);
     for (const Triangle &c : mesh.tri)
-        edge += (mesh.pos[c[1]] - mesh.pos[c[0]]).norm();
-    if (!(largest > 1e-3 * edge / t))
+        area[label[c[0]]] += triangle_area(mesh.pos[c[0]], mesh.pos[c[1]], mesh.pos[c[2]]);
+    for (int32_t v = 0; v < n; ++v)
+        largest[label[v]] = std::max(largest[label[v]], (moved[v] - mesh.pos[v]).norm());
+    bool any = false;
+    for (int32_t c = 0; c < count; ++c)
+        any = any || largest[c] > 1e-2 * 2 * std::abs(volume[c]) / area[c];
+    if (!any)
         return;
     std::vector<Vec3> offset(n);
     for (int32_t v = 0; v < n; ++v)
         offset[v] = moved[v] - mesh.pos[v];
-    for (int32_t round = 0; round <= n; ++round) {
+    for (int32_t round = 0; round <= count; ++round) {
         const Approach a = first_approach(mesh, offset, 1);
         if (a.time >= 1)
             return;
@@ -157,7 +160,7 @@ double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank,
             if (label[v] == c)
                 moved[v] = mesh.pos[v];
     }
-    keep_clear_of_other_sheets(mesh, label, moved);
+    keep_clear_of_other_sheets(mesh, label, volume, moved);
     edit.offset(moved);
     return largest_change;
 }
