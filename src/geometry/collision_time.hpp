@@ -1,14 +1,15 @@
-// Collision-safe motion: how long every vertex may move along x + t v before two triangles
-// that share no vertex could meet. Conservative by construction: a pair is let move only
-// as long as a plane that separates the two triangles at the start, moving along its
-// normal at one speed, still separates them; a triangle, the hull of its corners, stays on
-// its side of a plane exactly as long as its corners do, which under linear motion is a
-// linear condition in t. This is the separating-plane certificate of conservative
-// advancement. The plane is the one that lets the pair move longest among the
-// separating-axis theorem's candidates for two triangles (the two face normals and the
-// nine cross products of their edges), the planes square to a face through one of its
-// edges (two triangles side by side in one sheet), and the plane square to the line of
-// their centres.
+// How long every vertex may move along x + t v before two triangles that share no vertex
+// could meet: for collision-safe motion (motion/safe_motion) and for the volume
+// correction's larger offsets (adapt/volume). Conservative by construction: a pair is let
+// move only as long as a plane that separates the two triangles at the start, moving along
+// its normal at one speed, still separates them; a triangle, the hull of its corners,
+// stays on its side of a plane exactly as long as its corners do, which under linear
+// motion is a linear condition in t. This is the separating-plane certificate of
+// conservative advancement. The plane is the one that lets the pair move longest among
+// the separating-axis theorem's candidates for two triangles (the two face normals and
+// the nine cross products of their edges), the planes square to a face through one of
+// its edges (two triangles side by side in one sheet), and the plane square to the line
+// of their centres.
 #pragma once
 
 #include "mesh/tri_mesh.hpp"
@@ -31,7 +32,7 @@ struct Approach {
 // that share no vertex come closer than half their start separation across the plane
 // that certifies them apart: each may take a quarter of the gap. Pairs that already meet
 // or touch at the start have no such plane and are not limited. The pairs are found by
-// their swept boxes over [0, dt] in a uniform grid; the result does not depend on the
+// their swept boxes over [0, dt] (box_pairs.hpp); the result does not depend on the
 // number of threads.
 Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt);
 
