@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # surfadapt — the one build entry.
 #   make            the libraries, the Fortran module and the command-line tool
 #   make demo       build and run the demonstration

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Benchmark of the full adaptation: one sfa_adapt call on jittered geodesic spheres of
  * about 10k, 100k and 1M vertices at their own mean edge length (all default threads),
  * to see that the time per vertex stays flat as the mesh grows. One JSON line per size:

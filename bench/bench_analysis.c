@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Benchmarks of the quadric analysis: feature detection (sfa_get_feature_ranks) and the
  * per-vertex metric frames (sfa_get_vertex_frames) on icospheres of growing size. One JSON
  * line per case: the median of several runs, in seconds and nanoseconds per vertex. The

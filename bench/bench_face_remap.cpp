@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Benchmark of what face fields cost a smoothing sweep: FaceValues remaps every moved
 // vertex's fan by overlap (fields/face_values.hpp), one vertex after another, serially,
 // where the sweep computes its positions in parallel. On a 20k-vertex jittered sphere (the

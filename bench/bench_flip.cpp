@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Benchmark of one anisotropic flipping pass (§3.3) on the 1M-vertex jittered geodesic
 // sphere of bench_smooth, with one thread and with every core, and of the analysis it
 // needs, timed apart. Internal (the pass is not a public call): links the static library.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # The paper's three flow experiments at full size through the command-line tool: one JSON
 # line per run with the total time, the time per call (advection, sfa_smooth, sfa_adapt)
 # and per phase inside them (analysis, smoothing, flipping, splitting and contraction),

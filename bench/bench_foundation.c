@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Benchmarks of the foundation: mesh validation (sfa_set_mesh), one explicit step
  * (sfa_move) and one RK4 step (sfa_advect) on icospheres of growing size. One JSON line
  * per case: the median of several runs, in seconds and nanoseconds per element. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Benchmark of anisotropic smoothing: one sfa_smooth sweep (analysis, copy and commit
  * included) on a 1M-vertex geodesic sphere jittered tangentially; anisotropic with one
  * thread and with every core (OpenMP speed-up), and isotropic as a baseline. One JSON line

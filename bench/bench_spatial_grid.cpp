@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Benchmark of the three searches that share the spatial grid: the self-intersection count,
 // the search for facing sheets, and the crossing guard (index, then one query per face with
 // its corners moved by up to a tenth of an edge). On the 100k-vertex jittered sphere of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--worst K] [--json]
 //
 // The shape error of a tracked surface, measured by backtracing (issue "many bubbles",

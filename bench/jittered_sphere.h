@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The input of the smoothing and flipping benchmarks: a unit geodesic sphere whose
  * vertices were moved along the sphere by up to a third of an edge (deterministically), so
  * that both smoothing and flipping have work to do. C and C++. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Timing helpers shared by the benchmark drivers: a monotonic clock and the median of
  * repeated runs (the figure every benchmark reports). */
 #ifndef SURFADAPT_BENCH_TIMING_H

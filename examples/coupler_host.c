@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* How a coupling library carries data of its own through sfa_adapt: it keeps its values on
  * the vertices of the mesh it last read, and after the call maps them onto the new
  * vertices with sfa_get_vertex_origins (each new vertex: an old triangle and barycentric

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /**
  * @file surfadapt.h
  * @brief surfadapt: anisotropic adaptation of evolving triangulated surfaces.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # Compares the ABI of the built shared library with the committed baseline.
 # Usage: abi-check.sh LIB BASELINE            check (make abi-check)
 #        abi-check.sh --update LIB BASELINE   write the baseline (make abi-baseline)

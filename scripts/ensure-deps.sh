@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # Checks that the Debian packages surfadapt builds with are present. As root, installs
 # what is missing with apt-get; otherwise names it in one message and fails.
 # Usage: ensure-deps.sh [build|check|doc]   (check and doc need more than build)

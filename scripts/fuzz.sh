@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # Runs each libFuzzer harness for a given time, from its committed corpus, and reports what
 # it did. Usage: fuzz.sh SECONDS NAME...  (run by `make fuzz`; the harnesses are built in
 # build/fuzz/bin). New inputs go to build/fuzz/corpus/NAME; a crash, hang or contract

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # shellcheck shell=sh
 # What `make install` puts where: sourced by install.sh, which installs these items, and
 # by uninstall.sh, which removes exactly them, so that the two cannot disagree.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # Runs each argument as one test program (an argument may hold a command with its own
 # arguments), shows its output, and adds up the counts the programs print: CMocka's
 # "[  PASSED  ] N test(s)." / "[  FAILED  ] N test(s)" / "[  SKIPPED ] N test(s)" lines,

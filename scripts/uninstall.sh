@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # Removes from DESTDIR/PREFIX exactly what install.sh put there (the items of
 # install-manifest.sh) and the package's own directories once they are empty; shared
 # directories such as PREFIX/lib stay, and so does anything else in them. Run it from

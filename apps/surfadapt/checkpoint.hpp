@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Meshes saved during a flow run for the backtrace measure of shape error (bench/fidelity):
 // OBJ at full precision, with a first comment line that says which flow, period, time and
 // start sphere they belong to, so that a checkpoint file is read without other knowledge.

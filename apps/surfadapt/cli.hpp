@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // What the commands of the surfadapt tool share: errors, options, reading a mesh into a
 // surface, a quality summary, and writing a surface with its features for ParaView.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The commands of the surfadapt tool; each returns the process's exit status (0 done,
 // 1 failed, 2 bad usage). argv[1] is the command's name.
 #pragma once

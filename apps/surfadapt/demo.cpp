@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // surfadapt demo: the static case (a CAD part remeshed) and the dynamic one (the paper's
 // Enright test with adaptation).
 #include "cli.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // surfadapt enright and surfadapt vortex: the paper's flow experiments (§5.2).
 #include "cli.hpp"
 #include "commands.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "flow_run.hpp"
 
 #include "checkpoint.hpp"

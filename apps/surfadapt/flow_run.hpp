@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tracking a sphere through one of the paper's flows with the schedule a host follows
 // (README, "Dynamic surfaces"): every step, RK4 advection (sfa_advect, sub-stepping while
 // the fold control cuts the step) then one smoothing sweep; a full sfa_adapt every k steps,

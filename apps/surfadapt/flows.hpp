@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The analytic flows of the paper's §5.2, as sfa_velocity_fn callbacks. Both are
 // time-modulated by cos(pi t / T), so the exact solution returns to its start at t = T.
 #pragma once

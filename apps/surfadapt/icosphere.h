@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Generated spheres: the demo's and benchmarks' analytic input, with an exact answer. */
 #ifndef SURFADAPT_APP_ICOSPHERE_H
 #define SURFADAPT_APP_ICOSPHERE_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // surfadapt info and surfadapt features: what the library sees in a mesh.
 #include "cli.hpp"
 #include "commands.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // surfadapt: the command-line tool. A host of the library like any other: it uses only
 // the public C interface.
 //

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Reading triangle meshes from Wavefront OBJ and OFF files, for the command-line tool,
  * the tests and the benchmarks. Not part of the library: the reader only parses; whether
  * the mesh is acceptable is for sfa_set_mesh() to say, so nothing is dropped or checked. */

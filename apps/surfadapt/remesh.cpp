@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // surfadapt remesh IN OUT.vtk: the static use of the library (paper §5.1).
 #include "remesh.hpp"
 

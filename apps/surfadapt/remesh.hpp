@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Remeshing a static surface: sfa_adapt at a chosen edge length, with a quality summary.
 #pragma once
 

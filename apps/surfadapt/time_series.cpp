@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "time_series.hpp"
 
 #include "cli.hpp"

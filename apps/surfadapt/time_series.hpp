@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A VTK time series for ParaView: one XML unstructured-grid file (.vtu) per saved step
 // and a .pvd collection that lists them with their times.
 #pragma once

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 // Writing a surface and its features as a legacy ASCII VTK POLYDATA file, which ParaView
 // and VisIt open directly: the triangles as POLYGONS, the ridge edges as LINES, and the
 // per-vertex results of the quadric analysis as POINT_DATA.

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: BSD-3-Clause
 !> Fortran binding of surfadapt (see include/surfadapt.h, the contract).
 !>
 !> Two layers:

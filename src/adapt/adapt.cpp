@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "adapt/adapt.hpp"
 
 #include "adapt/carried_face_fields.hpp"

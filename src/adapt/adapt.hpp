@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The full adaptation (§3-§4): mesh optimization (smoothing, flipping) and mesh repair
 // (splitting, contraction), iterated.
 #pragma once

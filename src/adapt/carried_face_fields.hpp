@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The host's face fields as an edit carries them: one FaceValues listener each
 // (fields/face_values.hpp), attached for the lifetime of this object; the remapped values
 // go back into the fields when it is done.

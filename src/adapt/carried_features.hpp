@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The features of the surface as sfa_adapt found them, carried through its splits,
 // contractions and flips rather than detected again after every step: within one call a
 // feature stays a feature. Otherwise refining a crease that is just sharp enough (a coarse

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // What the host pins (sfa_set_fixed_vertices, sfa_set_required_edges): a contact line, the
 // seam with a structure, later a partition seam. Smoothing and adaptation treat a fixed
 // vertex as a corner that can never be merged away: it is never moved (smoothing, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Anisotropy-aware edge contraction (paper §4.2).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The pattern that splitting (§4.1), contraction (§4.2) and flipping (§3.3) share, written
 // once: every edge is judged in parallel on the mesh as the pass finds it; the candidates
 // are put in the operation's order (the paper's: longest first, shortest first, largest

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Anisotropic edge flipping (paper §3.3).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Every tunable of the adaptation, one double per key of enum sfa_param (same numbers),
 // with the paper's defaults (§3.1, §4.3), the range each may take and its unit.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Wall-clock seconds spent in each phase of smoothing and adaptation, so that a host (and
 // the benchmarks) can see where the time of a run goes without a profiler.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The settings of each operation, made from the public parameters (enum sfa_param) in one
 // place: degrees become radians, ratios of l become lengths, and the defaults of §3.1 and
 // §4.3 reach the operations only through here.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The host's size field (sfa_set_size_field): a desired edge length l per vertex, in place
 // of the one global l of §4.3, from which every threshold of mesh repair is derived. An
 // edge's l is the mean of its ends'. Before an adaptation uses them the sizes are graded,

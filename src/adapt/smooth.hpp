@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Anisotropic vertex redistribution (paper §3.2).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Smoothing alone (sfa_smooth): sweeps of anisotropic vertex redistribution (§3.2) with
 // the connectivity unchanged, so that host arrays stay valid.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "adapt/split.hpp"
 
 #include "adapt/size_field.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Anisotropy-aware edge splitting (paper §4.1).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // What the host keeps on the surface besides its geometry, in the form smoothing and
 // adaptation carry it: vertex fields (the velocities among them) and the size field are
 // interpolated (fields/carried_fields.hpp), face fields remapped by overlap

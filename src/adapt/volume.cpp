@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "adapt/volume.hpp"
 
 #include "geometry/collision_time.hpp"

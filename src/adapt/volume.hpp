@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Keeping the enclosed volume of every closed component (bubble, drop) on its own.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Adaptation: sfa_smooth, sfa_adapt.
 #include "api/boundary.hpp"
 

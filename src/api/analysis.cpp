@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Analysis: sfa_measure, sfa_get_feature_ranks, sfa_get_vertex_frames, sfa_get_ridge_edges.
 #include "api/boundary.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The C boundary: every entry point runs its body through call(), which turns exceptions
 // into a status and a message in the handle, and clears the message on success.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Components: sfa_get_component_count, sfa_get_components.
 #include "api/boundary.hpp"
 

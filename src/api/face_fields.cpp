@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Face fields: sfa_add_face_field, sfa_add_face_field_checked, sfa_get_face_field (carried
 // by fields/face_values.hpp).
 #include "api/field_arrays.hpp"

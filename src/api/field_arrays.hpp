@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // What sfa_add_field / sfa_get_field and their face-field twins share: the checks of a
 // host's array of ncomp values per element, adding it to a list of fields, and copying one
 // out (api/fields.cpp, api/face_fields.cpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Vertex fields: sfa_add_field, sfa_add_field_checked, sfa_get_field.
 #include "api/field_arrays.hpp"
 

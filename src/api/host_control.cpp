@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // What a coupled solver controls: sfa_set_size_field, sfa_set_fixed_vertices,
 // sfa_set_required_edges (the size field and the constraints are carried by
 // adapt/size_field.hpp and adapt/constraints.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Library-wide entry points: version, status strings, lifecycle and the plugin table.
 #include "api/boundary.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Mesh in and out: sfa_set_mesh, sfa_get_counts, sfa_get_mesh.
 #include "api/boundary.hpp"
 

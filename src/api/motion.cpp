@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Motion: sfa_set_velocities, sfa_move, sfa_advect.
 #include "api/boundary.hpp"
 

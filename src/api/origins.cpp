@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Where each vertex came from: sfa_get_vertex_origins (fields/vertex_origins.hpp).
 #include "api/boundary.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Parameters: sfa_set_param, sfa_get_param, sfa_get_param_bounds.
 #include "api/boundary.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The state behind one sfa_surface handle. Every entry point builds what it changes aside
 // and commits it with non-throwing moves and swaps, so that a failure at any point, out of
 // memory included, leaves this exactly as it was ("nothing lost", API.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fields/carried_fields.hpp"
 
 #include "mesh/parallel.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Host fields (one value set per vertex) carried through every change of an edit: a new,
 // merged or moved vertex takes the barycentric interpolation of the old values at its
 // stencil (mesh/stencil.hpp); compaction and renumbering move the values with their

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fields/face_values.hpp"
 
 #include "mesh/edge_collapse.hpp"

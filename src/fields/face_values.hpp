@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Values living on the triangles: ncomp densities per unit area per triangle (what host
 // face fields, such as a surfactant concentration, will be), carried through every change
 // of an edit as a conservative remap by overlap (geometry/overlap.hpp), each change local

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fields/vertex_fields.hpp"
 
 #include "mesh/error.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Host data living on the vertices (sfa_add_field): ncomp doubles per vertex, carried
 // through every operation that moves or creates vertices.
 #pragma once

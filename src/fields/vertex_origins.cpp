@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fields/vertex_origins.hpp"
 
 #include "mesh/error.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Where each vertex came from (sfa_get_vertex_origins): for every vertex of the mesh after
 // a call (sfa_smooth, sfa_adapt), the triangle of the mesh as it was before the call that
 // the vertex lies over, and its barycentric coordinates there, so that a host carries data

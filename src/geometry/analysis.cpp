@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "geometry/analysis.hpp"
 
 #include "mesh/parallel.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Everything the adaptation needs to know about the surface at once: quadrics, feature
 // ranks and ridge edges, and the anisotropic metric at every vertex.
 #pragma once

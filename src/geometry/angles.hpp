@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Angles: the public parameters and measures are in degrees, the computations in radians.
 #pragma once
 

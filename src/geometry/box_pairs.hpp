@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Every pair of overlapping boxes, each once: the broad phase of the self-intersection
 // count and of collision-safe motion. Boxes of up to a few cells go into the uniform grid
 // (spatial_grid.hpp); a box larger than that (a long triangle among short ones, a vertex

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Circles through three points: vertices on curved ridges and boundaries (a cylinder's rim)
 // are moved and placed along them, so that the curve keeps its shape instead of being cut
 // by chords. Collinear points mean a straight curve, which stays exactly straight.

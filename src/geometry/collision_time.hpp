@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // How long every vertex may move along x + t v before two triangles that share no vertex
 // could meet: for collision-safe motion (motion/safe_motion) and for the volume
 // correction's larger offsets (adapt/volume). Conservative by construction: a pair is let

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "geometry/crossing_guard.hpp"
 
 #include "geometry/quadric.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Keeping remeshing from passing a surface through itself where it is thinner than an edge.
 // There (the filaments of the vortex flows, a narrow gap between two sheets) the other side
 // is nearer in space than an edge but far away in the mesh, and the local test of each

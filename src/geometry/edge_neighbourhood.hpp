@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The shape of an edge's one or two triangles, which the splitting and contraction
 // criteria of §4.1 and §4.2 read. Angles come as cosines: every edge of the mesh is looked
 // at in each pass, and the criteria only compare them with fixed angles.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Exact arithmetic on floating-point expansions, after J. R. Shewchuk, "Adaptive Precision
 // Floating-Point Arithmetic and Fast Robust Geometric Predicates" (Discrete Comput. Geom.
 // 18, 1997), §2. An expansion is a sum of doubles, stored from the smallest magnitude to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Feature detection (§2.2, §3.1, after Jiao's quadric-based detection): feature ranks
 // 0/1/2 (smooth/ridge/corner) from the quadric's eigenvalue ratios, made exact on clean
 // input and stable on noisy input by safeguards that make ridge vertices form curves.

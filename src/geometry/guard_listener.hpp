@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The crossing guard as a listener of an edit: its index is built when a pass begins its
 // changes, every face a change made or reshaped is entered again, a new vertex is watched
 // where either end of its edge was, and the watched marks follow every renumbering.

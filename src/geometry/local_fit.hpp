@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The smooth surface around a vertex, fitted to its neighbours: where a vertex that slides
 // in its tangent plane should land so that it stays on the surface.
 #pragma once

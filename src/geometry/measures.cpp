@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "geometry/measures.hpp"
 
 #include "geometry/angles.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Global measures a host watches on its interface: enclosed volume (divergence theorem),
 // area, angles, edge lengths, triangle aspect ratio.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The anisotropic Riemannian metric of §3.1 (eqs. 11-12) in each vertex's tangent frame,
 // the transformation of a neighbour's frame into a vertex's (§3.2), and edge lengths in
 // metric space (eq. 4).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The area two triangles have in common in a plane, and the conservative remap it gives:
 // values per unit area on one set of triangles carried to another set covering the same
 // region, each new triangle taking the old values in proportion to how much of it lies

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "geometry/predicates.hpp"
 
 #include "geometry/expansion.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Exact orientation predicates: the sign of a determinant, always right. A floating-point
 // evaluation decides when its error bound allows (nearly always); otherwise the
 // determinant is evaluated exactly in expansion arithmetic (geometry/expansion.hpp).

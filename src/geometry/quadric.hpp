@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The quadric metric tensor of §2.2: A = N^T W N over the faces incident on a vertex,
 // with the face areas as weights W, and its eigen-analysis.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The quadric error metric of Garland and Heckbert, used to place a new or merged vertex
 // (§4.1, §4.2): the sum over nearby faces of area * (squared distance to the face's plane).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "geometry/self_intersection.hpp"
 
 #include "geometry/box_pairs.hpp"

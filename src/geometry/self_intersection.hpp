@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Whether a surface passes through itself: the one sure sign that a surface was folded
 // over. A sharp edge or a cusp (the rim of a sheet thinner than an edge) turns the normals
 // of two neighbouring triangles by nearly 180 degrees without any crossing; a surface

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A uniform grid of cubic cells for finding what lies near what: the boxes of faces that a
 // new face could meet (the crossing guard), the points near a vertex (the search for facing
 // sheets), the pairs of triangles that could intersect (the self-intersection count).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Which side of the surface a triangle faces, and the rule that no operation of an
 // adaptation or a smoothing turns a face over against it (issue 18).
 //

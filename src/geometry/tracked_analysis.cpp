@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "geometry/tracked_analysis.hpp"
 
 namespace sfa {

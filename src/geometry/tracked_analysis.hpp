@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The partial re-analysis as a listener of an edit: it hears which vertices' fans each
 // split, contraction, flip or sweep changed, keeps the analysis's per-vertex entries
 // numbered as the mesh through compaction, and brings the geometry up to date for the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Whether two closed triangles in space share a point, decided exactly: every decision is
 // the sign of an orientation determinant (geometry/predicates.hpp), so nearly coplanar,
 // touching and needle-thin configurations get the answer exact arithmetic would give.

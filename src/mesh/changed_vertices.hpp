@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Marks on the vertices whose fans an edit changed: what a partial analysis must look at
 // again (update_geometry), and what tells a pass that a verdict it made on the mesh as it
 // found it may no longer stand (edge_pass.hpp).

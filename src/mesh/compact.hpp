@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Compaction after contractions: dead vertices and triangles removed, the survivors kept
 // in their order, so that the host gets dense arrays in a deterministic order.
 #pragma once

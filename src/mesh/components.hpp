@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The connected components of a mesh (vertices joined by edges): the bubbles, drops and
 // sheets of a multiphase interface. Each closed component encloses a volume of its own.
 #pragma once

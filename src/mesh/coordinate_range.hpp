@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The coordinates the library computes in (stated in surfadapt.h, "Coordinates").
 //
 // Its geometry is made of products of coordinate differences: an area vector of two, a

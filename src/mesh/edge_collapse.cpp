@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mesh/edge_collapse.hpp"
 
 #include <algorithm>

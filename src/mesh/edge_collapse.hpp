@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Edge contraction, the topological half of §4.2: the two ends of an edge merged into one.
 #pragma once
 

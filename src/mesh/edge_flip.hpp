@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The edge flip, the topological half of §3.3: replacing the diagonal of the quad formed by
 // two triangles with the other diagonal. Geometry (which flips are good) is adapt/flip's.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Edge splitting, the topological half of §4.1: a new vertex on an edge, joined to the
 // opposite vertices.
 #pragma once

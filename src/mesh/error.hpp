@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The one exception type of the library: a status code of the public interface and a
 // message that names the offending element and the rule it breaks. Thrown anywhere below
 // the C boundary; src/api turns it into a return status and sfa_last_error().

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mesh/halfedge_flags.hpp"
 
 namespace sfa {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A flag on every edge (both halves of an interior edge carry it), carried through every
 // change: the halves of a split edge keep it, the new edges of a split or flip do not have
 // it, and the edge that two edges of a contracted triangle become has it if either had it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The one checker of the mesh invariants (DESIGN.md): used by the tests after every
 // operation and by the SFA_ERR_INTERNAL guards after operations that change connectivity.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mesh/locality_order.hpp"
 
 #include "mesh/parallel.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Renumbering for locality: after adaptation has appended thousands of new vertices and
 // triangles, the fans of neighbouring vertices lie far apart in memory, and every
 // per-vertex loop (analysis, smoothing, flipping) waits on cache misses. Ordering the

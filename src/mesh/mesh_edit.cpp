@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mesh/mesh_edit.hpp"
 
 #include "mesh/compact.hpp"

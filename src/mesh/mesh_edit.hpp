@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The one way a mesh is changed during smoothing and adaptation (DESIGN: "one edit
 // mechanism"). MeshEdit performs split, collapse, flip, move, compact and renumber on a
 // TriMesh, and tells every attached listener what each change did, so that everything that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Threads for the per-vertex and per-edge loops (OpenMP). Every parallel loop writes only
 // its own elements, and floating-point sums go through ordered_sum, so results are
 // bit-identical for any number of threads. A loop body must not throw (an exception cannot leave an OpenMP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A renumbering of a mesh's vertices and triangles (compaction, the locality order), as
 // the data living on its elements must follow it.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Where a point lies over a mesh: the corners of a triangle and barycentric weights. Every
 // vertex attribute that is interpolated (host fields, velocities) is carried through an
 // operation that moves, creates or merges a vertex with the stencil of its new position

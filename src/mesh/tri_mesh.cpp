@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mesh/tri_mesh.hpp"
 
 #include "mesh/vertex_star.hpp"

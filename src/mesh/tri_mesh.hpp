@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The array-based half-edge (half-facet) triangle mesh (DESIGN.md, "Data structure").
 //
 // Half-edge h = 3*t + i is edge i of triangle t, running from corner i to corner i+1.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Complete validation of a host's mesh (sfa_set_mesh): every defect gets Status::mesh and
 // a message that names the element and the rule, in the host's own index base.
 #pragma once

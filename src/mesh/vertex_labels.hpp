@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A label on every vertex that a change never alters: a new vertex takes its edge's ends'
 // label (they have the same one), a merged vertex keeps the kept end's. The component a
 // vertex belongs to is such a label, as long as the topology does not change.

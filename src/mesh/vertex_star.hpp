@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The half-edges leaving each vertex, grouped by vertex (compressed rows): the one
 // structure from which twins are found and fans are checked, in O(valence) per vertex
 // and without sorting all edges of the mesh.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "motion/explicit_step.hpp"
 
 #include "mesh/coordinate_range.hpp"

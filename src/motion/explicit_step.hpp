@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One explicit step with the host's per-vertex velocities (sfa_move), cut so that no
 // triangle folds.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "motion/fold_time.hpp"
 
 #include "mesh/parallel.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Fold control for explicit motion (paper §5.2, after Jiao's time-step control): under
 // linear motion x(t) = x + t v, the normal of a triangle is a quadratic in t, and the
 // triangle turns over when that normal stops pointing along its starting direction.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "motion/rk4_step.hpp"
 
 #include "mesh/error.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One classic fourth-order Runge-Kutta step through a velocity field the host evaluates
 // in batches (sfa_advect, paper §5.2), with the fold control of explicit_step.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "motion/safe_motion.hpp"
 
 #include "mesh/error.hpp"

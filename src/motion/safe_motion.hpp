@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Motion that never lets the surface touch itself (SFA_PARAM_COLLISION_SAFE_MOTION): the
 // explicit and Runge-Kutta steps of sfa_move and sfa_advect, cut further so that no two
 // triangles that share no vertex meet during the step (geometry/collision_time.hpp).

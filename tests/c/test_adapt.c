@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The full adaptation (sfa_adapt, paper §3-§4): refinement and coarsening to the desired
  * edge length with features, volume and host fields kept, and its determinism. */
 #include "support/surface_distance.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Collision-safe motion (SFA_PARAM_COLLISION_SAFE_MOTION): two drops driven into each other
  * by the host are stopped apart, or the call fails cleanly, and the surface never passes
  * through itself; without it they pass through each other. The same through sfa_advect. */

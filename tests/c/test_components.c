@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Components (bubbles, drops, sheets in one surface): their count and deterministic
  * numbering, per-component measures and their errors, and each closed component keeping
  * its own volume through smoothing and adaptation, whatever the others do. */

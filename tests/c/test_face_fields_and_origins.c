@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Face fields (densities per unit area, conserved through smoothing and adaptation by a
  * remap by overlap) and vertex origins (where each vertex came from, so that a host
  * carries data of its own through a call). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Feature detection (paper §2.2, §3.1): sfa_get_feature_ranks, sfa_get_ridge_edges and
  * sfa_get_vertex_frames on shapes whose features are known exactly, on a real CAD part, and
  * under the changes the answer must not depend on (rotation, scale, numbering). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Vertex fields: attach, read back, bad input, and what other calls do to them. */
 #include "support/testing.h"
 

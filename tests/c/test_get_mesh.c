@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* sfa_get_counts and sfa_get_mesh: capacities, bases, state. */
 #include "support/testing.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* What a coupled solver controls: a size field (the edge length follows the host's local
  * grid spacing), fixed vertices and required edges (kept bit for bit), and the checked
  * variants of the functions that read one value per vertex (a stale array is refused). */

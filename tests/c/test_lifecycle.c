@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Library identity, handle lifecycle, error strings and the plugin function table. */
 #include "support/testing.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* sfa_measure on shapes whose answers are known in closed form. */
 #include "support/testing.h"
 

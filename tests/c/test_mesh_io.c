@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The OBJ/OFF reader of the command-line tool, tests and benchmarks (apps/surfadapt/obj_io.c):
  * it must hand the library exactly what the file says, 0-based, without judging it. */
 #define _XOPEN_SOURCE 700 /* mkstemp, close, unlink, P_tmpdir */

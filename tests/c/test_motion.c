@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* sfa_set_velocities, sfa_move and sfa_advect: exact steps, fold control, bad input. */
 #include "support/testing.h"
 

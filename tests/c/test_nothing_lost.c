@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* "Nothing lost" under std::bad_alloc: every mutating call is run with its n-th allocation
  * failing, n = 0, 1, 2, ..., until it succeeds. Each failure must be SFA_ERR_MEMORY with a
  * message and leave the surface (mesh, velocities, fields, parameters) exactly as it was.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The same jittered sphere far from the origin and at very different scales, through
  * sfa_smooth and sfa_adapt: relative results as at the origin at scale 1, to what the
  * coordinates can hold.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Argument and state checks of sfa_smooth and sfa_adapt. Smoothing a cube succeeds and
  * changes nothing: every vertex is a corner, and corners never move. Adapting it at its
  * own mean edge length changes nothing either: no edge is long enough to split, and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Parameters: defaults (the paper's), round trips, range checks, their bounds, survival across meshes. */
 #include "support/testing.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The real meshes of the data directory ($SFA_DATA_DIR, default ../shared/data): what
  * the library makes of them. Each test skips when its file is absent. */
 #include "support/testing.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* sfa_set_mesh: what it accepts, what it rejects and how it says so, and that a rejected
  * mesh leaves the surface exactly as it was. */
 #include "support/testing.h"

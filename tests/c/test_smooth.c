@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Anisotropic smoothing (sfa_smooth, paper §3.2): shape quality improves while volume,
  * surface, features and host fields are kept. */
 #include "support/testing.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Different handles used from different threads at the same time give the same results
  * as one after the other: the library keeps no global mutable state. */
 #include "support/testing.h"

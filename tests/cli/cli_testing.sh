@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Sourced by the command-line tests: check and finish, the tool's path, and a scratch
 # directory under build/ removed on exit ($work). Run from the repository root.
 tool=${SURFADAPT:-bin/surfadapt}

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # The `surfadapt features` command: writes a unit cube as OBJ into a scratch directory
 # under build/, converts it, and checks the legacy VTK file (sections, counts, the ranks of
 # the cube) and the failures (unreadable input, unwritable output, unknown option,

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # The backtrace measure of shape error (bench/fidelity) on a coarse Enright run: the flow
 # saves its checkpoints, the tool finds the start sphere's own error at t = 0, the tracked
 # surface's at t = T within a few times that, and a surface that is never remeshed out of

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # Short runs of the paper's flows through the command-line tool (coarse spheres, part of a
 # period; the full runs are `make bench`): they finish, keep the volume within 0.5 %, never
 # fold the surface (no two neighbouring triangles' normals more than 150 degrees apart, no

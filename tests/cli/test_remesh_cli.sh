@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # The `surfadapt remesh` command: refines a unit cube written as OBJ under build/, checks the
 # summary and the VTK file it writes, and the failures (missing input, bad edge length,
 # unknown option, missing arguments). Needs the tool built (`make`).

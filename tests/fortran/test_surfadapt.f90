@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: BSD-3-Clause
 ! Test of the Fortran binding: a host with 1-based (3,n) arrays drives the library
 ! through the module surfadapt. Prints one line per check and a final summary line;
 ! stops with a non-zero status if any check failed.

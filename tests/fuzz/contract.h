@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* The contract every fuzz harness checks after each call of the library (README,
  * "Reliability"): the status is one the header defines and never SFA_ERR_INTERNAL (a
  * bug); a failed call has a message and left the surface exactly as it was (every getter

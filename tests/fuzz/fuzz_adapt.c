@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Fuzzes smoothing and adaptation of arbitrary meshes (mesh_input.h) that the library
  * accepts: sfa_smooth, then sfa_adapt at the input's edge length (bounded so that the
  * result has at most a few hundred vertices), then every query; the contract (contract.h)

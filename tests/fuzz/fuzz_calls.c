@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Fuzzes sequences of API calls on one surface: parameters (any key, any value), velocities
  * (of the right or a stale length), motion, advection through a few flows, smoothing,
  * adaptation, vertex and face fields, size fields, fixed vertices and required edges, and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Fuzzes sfa_set_mesh with arbitrary vertex and triangle arrays (mesh_input.h), then every
  * query of the surface; the contract (contract.h) is checked after every call. The cheap
  * path: fuzz_adapt takes the same inputs through smoothing and adaptation. */

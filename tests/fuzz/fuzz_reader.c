@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Fuzzes the command-line tool's mesh reader (OBJ and OFF) with arbitrary text, and hands
  * what it reads to sfa_set_mesh: the reader must fail with a message naming a line or
  * return arrays of the counts it states; the library must then keep its contract.

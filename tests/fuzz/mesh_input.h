@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Decodes a fuzzer's input into arrays for sfa_set_mesh, for fuzz_mesh and fuzz_adapt.
  *
  * Input: a flags byte (bit 0: index base 1; bit 1: drop unreferenced vertices; bit 2:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Runs a fuzz harness's LLVMFuzzerTestOneInput on files, without libFuzzer: `make check`
  * replays the committed corpus and crash reproducers this way, in the sanitizer build.
  * Arguments: files or directories (every file in them). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* A host built only from what `make install` put in place, found through pkg-config. */
 #include <math.h>
 #include <stdio.h>

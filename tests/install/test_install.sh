@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs into a staging tree under build/ with `make install DESTDIR=... PREFIX=...`,
 # checks what was installed, then builds and runs a C host found only through
 # pkg-config, linked against the shared library and, fully static, against the static

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * A plugin host: loads the library with dlopen, resolves only sfa_get_api and does
  * everything else through the function table. This is how hosts that must not link

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // |a - b| <= tol in double precision, with both values in the failure message. CMocka's
 // assert_float_equal converts its arguments to float, which cannot tell a difference of
 // 1e-12 from one of 1e-8. (tests/c/support/testing.h has the same for the C tests.)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit test of the partial analysis inside an adaptation pass: after splitting, contraction
 // and flipping, the vertices whose fans the edit reported changed are analysed anew
 // (TrackedAnalysis), and the result must be what a full analysis of the changed mesh

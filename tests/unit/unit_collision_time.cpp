@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the collision-safe step (first_approach): on random pairs of triangles
 // with random velocities no pair meets at any time of the step it allows (checked with
 // the exact triangle test at many times), the step is not needlessly short where the

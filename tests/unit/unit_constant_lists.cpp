@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The lists of constants agree wherever they are written down: the public header
 // (include/surfadapt.h) is the source; the Fortran module must declare every SFA_*
 // constant with the same name and value, the library's range table

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the crossing guard: which vertices it watches (those near a facing sheet), which
 // faces it reports as passing through a watched one, and, through the public API, that no
 // smoothing or adaptation carries a surface in a violent flow through itself.

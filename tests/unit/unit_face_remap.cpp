@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the conservative remap by overlap (geometry/overlap.hpp) and of FaceValues
 // (fields/face_values.hpp), which carries densities per unit area on the triangles through
 // every change of an edit with it: the overlap of two triangles in known cases, slivers

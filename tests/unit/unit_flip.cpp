@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of anisotropic edge flipping (§3.3): Delaunay meshes of a plane stay as they
 // are, a badly triangulated plane patch becomes its Delaunay triangulation, ridge edges are
 // never flipped, every flip keeps the mesh invariants, and together with smoothing (§3.2)

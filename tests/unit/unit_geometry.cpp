@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the quadric analysis and the metric: the eigen-solver choice on
 // near-degenerate tensors, the frame rotation of §3.2, metric lengths (eq. 4) and the
 // clamping of eq. 12.

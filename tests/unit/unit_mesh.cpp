@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the mesh core: adjacency, one-ring walks, the invariant checker, and the
 // edge flip, split and contraction with compaction, and the renumbering for locality.
 #include "mesh/compact.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the edit mechanism (mesh/mesh_edit.hpp): through random sequences of
 // splits, contractions, flips, moves, compactions and renumberings, every listener keeps
 // what it carries right: edge flags stay on the same vertex pairs, a linear field stays

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the fold control: the quadratic's first root and the fold time of a
 // triangle under linear motion, against hand-computed answers.
 #include "motion/fold_time.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the exact predicates (orient2d, orient3d) and of the triangle-triangle
 // test built on them, against exact rational arithmetic (GMP): every double is a rational,
 // so the reference answers are the true ones. The cases are the hard ones: nearly coplanar

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the smoothing sweep's re-check of its own moves (§3.2): a move that folds a
 // triangle is not made, and the re-check ends also where a triangle was flat before any
 // move (it used to stop that triangle's corners again and again, for ever).

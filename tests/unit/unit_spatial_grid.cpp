@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the spatial grid: it finds each pair of overlapping boxes exactly once, the
 // pairs an all-pairs test finds, through its pair sweep and through its queries, built and
 // added alike; and a query meets the points of its cells in the order of the cells and of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the vertex origins (fields/vertex_origins.hpp): through random splits,
 // contractions, flips, sweeps, offsets, compactions and the locality order of an edit with
 // OriginHints attached, every vertex of a flat plane is reproduced by its origin over the

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: BSD-3-Clause
 ! An example Fortran host: a solver that knows its interface velocities itself (here the
 ! vortex flow of the paper's §5.2.1, time-modulated with period T = 2) and drives the
 ! library with sfa_move, following the schedule of the README ("Dynamic surfaces"):

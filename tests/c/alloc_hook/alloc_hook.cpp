@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Replacement global operator new/delete with a failure countdown (see alloc_hook.h).
 #include "alloc_hook/alloc_hook.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Provoking std::bad_alloc inside the library from C tests.
  *
  * The test executables define the global operator new (alloc_hook.cpp); being linked

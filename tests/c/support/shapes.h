@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Generated meshes with exact answers, and helpers shared by the C tests and benchmarks.
  *
  * Everything here uses the public API only and does not depend on CMocka, because the

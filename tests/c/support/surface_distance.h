@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* Distances between two triangle meshes, for tests that compare an adapted surface with
  * its input: the largest distance from any vertex or triangle centroid of one mesh to the
  * surface of the other (a sampled one-sided Hausdorff distance), found through a uniform

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* CMocka helpers for the C tests. Header-only (static inline) because the objects in
  * support/ are also linked into the benchmarks, which do not link CMocka. */
 #ifndef SURFADAPT_TEST_TESTING_H
