@@ -78,6 +78,13 @@ FIDELITY         := build/bench/fidelity
 BENCHES          := $(patsubst bench/%.c,build/bench/%,$(sort $(wildcard bench/*.c))) \
                     $(filter-out $(FIDELITY),$(patsubst bench/%.cpp,build/bench/%,$(sort $(wildcard bench/*.cpp))))
 
+# The fuzz harnesses (see "fuzzing" below); defined here, before `check` names them.
+FUZZERS      := $(patsubst tests/fuzz/%.c,%,$(sort $(wildcard tests/fuzz/fuzz_*.c)))
+FUZZ_FLAGS   := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -O1 -g
+FUZZ_OBJS    := $(LIB_SRCS:%.cpp=build/fuzz/%.o)
+FUZZ_SECONDS ?= 60
+REPLAYS      := $(FUZZERS:%=build/san/tests/replay_%)
+
 TEST_RPATH := -Wl,-rpath,'$$ORIGIN/../../lib'
 
 .PHONY: all deps deps-check deps-doc test check demo bench doc install uninstall clean abi-check abi-baseline fuzz
@@ -213,11 +220,6 @@ check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE
 # committed corpus (tests/fuzz/corpus/NAME), keeping what it finds in build/fuzz/corpus
 # and any crash in build/fuzz/crashes (scripts/fuzz.sh). A crash, once fixed, goes to
 # tests/fuzz/crashes/NAME. `make check` replays both directories in the sanitizer build.
-FUZZERS      := $(patsubst tests/fuzz/%.c,%,$(sort $(wildcard tests/fuzz/fuzz_*.c)))
-FUZZ_FLAGS   := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -O1 -g
-FUZZ_OBJS    := $(LIB_SRCS:%.cpp=build/fuzz/%.o)
-FUZZ_SECONDS ?= 60
-REPLAYS      := $(FUZZERS:%=build/san/tests/replay_%)
 
 build/fuzz/%.o: %.cpp | deps
 	@mkdir -p $(@D)

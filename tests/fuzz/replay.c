@@ -57,6 +57,7 @@ int main(int argc, char **argv)
         }
         free(entries);
     }
-    printf("replayed %d inputs\n", inputs);
+    /* In the form scripts/run-tests.sh counts: an input that broke the contract aborted. */
+    printf("replay: %d passed, %d failed\n", inputs - failures, failures);
     return failures != 0;
 }
