@@ -305,17 +305,14 @@ static int parse(const char *path, char *text, sfa_mesh_data *out, context *c)
 int mesh_read(const char *path, sfa_mesh_data *out, char *err, size_t err_len)
 {
     context c = {path ? path : "(null)", err, err_len, 0};
-    if (err && err_len)
-        err[0] = '\0';
-    if (!out)
-        return fail(&c, "no output given");
-    memset(out, 0, sizeof *out);
-    if (!path)
-        return fail(&c, "no file name given");
+    if (!path || !out) /* mesh_parse says which */
+        return mesh_parse(path, NULL, out, err, err_len);
     char *text = slurp(path, &c);
-    if (!text)
+    if (!text) {
+        memset(out, 0, sizeof *out);
         return -1;
-    const int rc = parse(path, text, out, &c);
+    }
+    const int rc = mesh_parse(path, text, out, err, err_len);
     free(text);
     return rc;
 }

@@ -178,9 +178,8 @@ Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, 
     for_each_overlapping_pair(swept, cell, [&](int32_t s, int32_t t) {
         Approach &mine = per_thread[static_cast<size_t>(thread_index())];
         const Triangle &p = mesh.tri[s], &q = mesh.tri[t];
-        for (int32_t v : p)
-            if (v == q[0] || v == q[1] || v == q[2])
-                return; // neighbours: the fold control's concern
+        if (share_a_vertex(p, q))
+            return; // neighbours: the fold control's concern
         if (out_of_reach(reach[s], reach[t], dt))
             return; // too far apart for how differently they move: most neighbours in a sheet
         PairMotion m;

@@ -31,9 +31,8 @@ int32_t self_intersection_count(const TriMesh &mesh)
     std::vector<int32_t> per_thread(static_cast<size_t>(loop_threads()), 0);
     for_each_overlapping_pair(boxes, cell, [&](int32_t s, int32_t t) {
         const Triangle &p = mesh.tri[s], &q = mesh.tri[t];
-        for (int32_t v : p)
-            if (v == q[0] || v == q[1] || v == q[2])
-                return; // neighbours touch by construction
+        if (share_a_vertex(p, q))
+            return; // neighbours touch by construction
         if (triangles_intersect(mesh.pos[p[0]], mesh.pos[p[1]], mesh.pos[p[2]], mesh.pos[q[0]], mesh.pos[q[1]],
                                 mesh.pos[q[2]]))
             ++per_thread[static_cast<size_t>(thread_index())];

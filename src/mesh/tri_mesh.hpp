@@ -18,6 +18,15 @@ namespace sfa {
 using Vec3 = Eigen::Vector3d;
 using Triangle = std::array<int32_t, 3>;
 
+// Whether two triangles have a corner in common (neighbours, for the tests of crossing).
+inline bool share_a_vertex(const Triangle &p, const Triangle &q)
+{
+    for (int32_t v : p)
+        if (v == q[0] || v == q[1] || v == q[2])
+            return true;
+    return false;
+}
+
 struct TriMesh {
     std::vector<Vec3> pos;
     std::vector<Triangle> tri;
