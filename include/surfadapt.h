@@ -236,8 +236,33 @@ enum sfa_param {
         takes 1.7 times as long and the vortex run with T = 2 1.9 times. 0: motion is cut only against folding. Off by
         default for that cost, and because without topology change a flow that brings two
         sheets together (the vortex flow with T = 6) would stop there.
+        ::SFA_PARAM_TOPOLOGY_CHANGE turns it on as well.
         A flag, 0 or 1; default 0. */
-    SFA_PARAM_COLLISION_SAFE_MOTION = 24
+    SFA_PARAM_COLLISION_SAFE_MOTION = 24,
+    /** 1: the surface may change its topology, as bubbles coalesce and drops break up.
+        Each sfa_adapt() call first merges two sheets that face each other closer than the
+        merge distance (::SFA_PARAM_MERGE_DISTANCE): the two triangles of the nearest edge
+        of each go, and a short tube of eight triangles joins the two holes (two bubbles
+        become one, or a sheet gains a handle; events of one call are at least two desired
+        edge lengths apart). Then it cuts every neck or filament that contraction has
+        thinned to a loop of three edges shorter than the merge distance, closing both
+        sides with a triangle (one drop becomes two). Both are checked with exact
+        predicates and undone where they would make the surface cross itself; vertices the
+        host fixed and the ends of required edges take no part. A closed component less
+        than two merge distances across is removed (::SFA_MEASURE_DROPS_REMOVED). The
+        adaptation that follows
+        shapes the new triangles. Motion (sfa_move(), sfa_advect()) is then collision-safe
+        as with ::SFA_PARAM_COLLISION_SAFE_MOTION, so that sheets meet here instead of
+        passing through each other. ::SFA_MEASURE_MERGES, ::SFA_MEASURE_PINCHES and
+        ::SFA_MEASURE_TOPOLOGY_VOLUME_CHANGE tell what the last call did; the components
+        (sfa_get_components()) tell which bubbles became which, and the vertex origins
+        (sfa_get_vertex_origins()) where each vertex came from. 0: the topology never
+        changes. A flag, 0 or 1; default 0. */
+    SFA_PARAM_TOPOLOGY_CHANGE = 25,
+    /** The merge distance of ::SFA_PARAM_TOPOLOGY_CHANGE, as a ratio of the local desired
+        edge length l: sheets nearer than it merge, necks thinner than it are cut.
+        A ratio to l, in (0, 10]; default 0.5. */
+    SFA_PARAM_MERGE_DISTANCE = 26
 };
 
 /** Quantities for sfa_measure(). */
@@ -287,7 +312,24 @@ enum sfa_measure_quantity {
         before the correction of ::SFA_PARAM_VOLUME_CORRECTION took it back: how close the
         operations themselves come to conserving each volume. 0 before the first such call;
         it needs no mesh set. Dimensionless. */
-    SFA_MEASURE_VOLUME_CORRECTION = 14
+    SFA_MEASURE_VOLUME_CORRECTION = 14,
+    /** How many merges of two sheets (::SFA_PARAM_TOPOLOGY_CHANGE) the last sfa_adapt()
+        call made; 0 before the first. */
+    SFA_MEASURE_MERGES = 15,
+    /** How many necks or filaments the last sfa_adapt() call cut; 0 before the first. */
+    SFA_MEASURE_PINCHES = 16,
+    /** The volume the merges and pinches of the last sfa_adapt() call made or destroyed,
+        each event's |change| summed (a tube encloses the thin gap it bridges; a cut neck
+        loses the sliver between its two closing triangles). Length units cubed; 0 before
+        the first call. The adaptation after the events keeps each new component's volume
+        as the events left it. */
+    SFA_MEASURE_TOPOLOGY_VOLUME_CHANGE = 17,
+    /** How many closed components the last sfa_adapt() call removed because they were
+        less than two merge distances across (::SFA_PARAM_TOPOLOGY_CHANGE): drops below
+        what the mesh resolves, such as the satellite a pinch leaves between two ends.
+        Their volume counts in ::SFA_MEASURE_TOPOLOGY_VOLUME_CHANGE, and their face-field
+        integrals go with them. 0 before the first call. */
+    SFA_MEASURE_DROPS_REMOVED = 18
 };
 
 /** One adaptive surface. Opaque; create with sfa_create(), free with sfa_destroy(). */

@@ -63,6 +63,8 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_PARAM_SIZE_GRADATION = 22
   integer(c_int), parameter, public :: SFA_PARAM_SHORT_EDGE_RATIO = 23
   integer(c_int), parameter, public :: SFA_PARAM_COLLISION_SAFE_MOTION = 24
+  integer(c_int), parameter, public :: SFA_PARAM_TOPOLOGY_CHANGE = 25
+  integer(c_int), parameter, public :: SFA_PARAM_MERGE_DISTANCE = 26
 
   ! --------------------------------------------------- enum sfa_measure_quantity
   integer(c_int), parameter, public :: SFA_MEASURE_VOLUME = 0
@@ -80,6 +82,10 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_MEASURE_SECONDS_REPAIR = 12
   integer(c_int), parameter, public :: SFA_MEASURE_SELF_INTERSECTIONS = 13
   integer(c_int), parameter, public :: SFA_MEASURE_VOLUME_CORRECTION = 14
+  integer(c_int), parameter, public :: SFA_MEASURE_MERGES = 15
+  integer(c_int), parameter, public :: SFA_MEASURE_PINCHES = 16
+  integer(c_int), parameter, public :: SFA_MEASURE_TOPOLOGY_VOLUME_CHANGE = 17
+  integer(c_int), parameter, public :: SFA_MEASURE_DROPS_REMOVED = 18
 
   public :: sfa_version_string, sfa_abi_version, sfa_version_number, sfa_status_string
   public :: sfa_create, sfa_destroy, sfa_last_error

@@ -8,6 +8,7 @@
 #include "adapt/size_field.hpp"
 #include "adapt/smooth.hpp"
 #include "adapt/split.hpp"
+#include "adapt/topology_change.hpp"
 #include "adapt/volume.hpp"
 #include "fields/carried_fields.hpp"
 #include "fields/vertex_origins.hpp"
@@ -24,10 +25,13 @@ constexpr double settled_fraction = 1e-2;
 class Adaptation {
 public:
     // `size`: the graded desired length of every vertex, the last of data.fields (or null).
+    // `origin_hints`: per vertex, a triangle of the mesh as the call found it.
     Adaptation(TriMesh &mesh, SurfaceData &data, const std::vector<double> *size, const AdaptSettings &settings,
-               SurfaceAnalysis &workspace, const Components &components, PhaseTimes &seconds)
+               SurfaceAnalysis &workspace, const Components &components, std::vector<int32_t> origin_hints,
+               PhaseTimes &seconds)
         : mesh_(mesh), settings_(settings), seconds_(seconds), geometry_(workspace), edit_(mesh),
-          carried_fields_(data.fields), face_fields_(edit_, data.face_fields), origins_(mesh), size_(size),
+          carried_fields_(data.fields), face_fields_(edit_, data.face_fields), origins_(std::move(origin_hints)),
+          size_(size),
           constraints_(mesh, data.constraints), features_(detected_features()), tracked_(geometry_, mesh),
           guard_listener_(guard_), closed_(components.closed), component_of_(components.of_vertex),
           volumes_(component_volumes(mesh, components.of_vertex, components.count))
@@ -175,8 +179,17 @@ AdaptCounts adapt_surface(TriMesh &mesh, SurfaceData &data, const AdaptSettings 
                           std::vector<char> &near_sheet, SurfaceAnalysis &workspace, Components &components)
 {
     AdaptCounts counts;
+    std::vector<int32_t> origin_hints = OriginHints(mesh).hints();
+    if (settings.topology_change) {
+        PhaseClock clock(counts.seconds.repair);
+        counts.topology = change_topology(mesh, data, settings.merge_distance, settings.repair.desired_length,
+                                          origin_hints);
+        if (counts.topology.merges + counts.topology.pinches + counts.topology.removals > 0)
+            components = connected_components(mesh);
+    }
     const SizeAsField size(mesh, data, settings.size_gradation);
-    Adaptation adaptation(mesh, data, size.values(), settings, workspace, components, counts.seconds);
+    Adaptation adaptation(mesh, data, size.values(), settings, workspace, components, std::move(origin_hints),
+                          counts.seconds);
     while (counts.passes < settings.max_passes) {
         // Settled: after the first pass or two, the changes of a pass dwindle to a few edges
         // in a thousand (on a dynamic surface, the second pass of a call changes about 0.5 %

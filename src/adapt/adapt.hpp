@@ -6,6 +6,7 @@
 #include "adapt/phase_times.hpp"
 #include "adapt/settings.hpp"
 #include "adapt/surface_data.hpp"
+#include "adapt/topology_change.hpp"
 #include "mesh/components.hpp"
 
 #include <vector>
@@ -17,6 +18,7 @@ struct AdaptCounts {
     // The largest relative volume change of a closed component that the operations made
     // (restore_enclosed_volumes), and the correction took back if it was on.
     double volume_correction = 0;
+    TopologyCounts topology; // the merges and pinches made first (SFA_PARAM_TOPOLOGY_CHANGE)
     PhaseTimes seconds;
 };
 
@@ -35,10 +37,12 @@ struct AdaptCounts {
 // surface through itself where it is thinner than an edge (crossing_guard.hpp): the
 // vertices near a facing sheet are found at the start and carried through the call; on
 // return `near_sheet` holds them, numbered as the returned mesh (empty without the guard).
+// With topology change on, merges and pinches come first (topology_change.hpp), and the
+// components are those they leave.
 // The analyses are made in `workspace`, whose contents on entry do not matter and on
 // return mean nothing; keeping it from call to call keeps its memory. `components` are
 // those of the mesh on entry, and on return those of the returned mesh, numbered and
-// indexed as connected_components would (the topology does not change).
+// indexed as connected_components would.
 AdaptCounts adapt_surface(TriMesh &mesh, SurfaceData &data, const AdaptSettings &settings,
                           std::vector<char> &near_sheet, SurfaceAnalysis &workspace, Components &components);
 

@@ -40,6 +40,8 @@ const ParamSpec specs[] = {
     {"SFA_PARAM_SIZE_GRADATION", "a ratio", 1.5, RangeKind::open_interval, 1, INFINITY},
     {"SFA_PARAM_SHORT_EDGE_RATIO", "a ratio to l", 0.6, RangeKind::right_open, 0, 1},
     {"SFA_PARAM_COLLISION_SAFE_MOTION", "a flag", 0, RangeKind::flag, 0, 1},
+    {"SFA_PARAM_TOPOLOGY_CHANGE", "a flag", 0, RangeKind::flag, 0, 1},
+    {"SFA_PARAM_MERGE_DISTANCE", "a ratio to l", 0.5, RangeKind::left_open, 0, 10},
 };
 static_assert(sizeof specs / sizeof specs[0] == static_cast<size_t>(Param::count), "one spec per key");
 

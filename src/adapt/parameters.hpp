@@ -34,6 +34,8 @@ enum class Param : int {
     size_gradation,
     short_edge_ratio,
     collision_safe_motion,
+    topology_change,
+    merge_distance,
     count
 };
 

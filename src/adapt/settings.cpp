@@ -69,7 +69,9 @@ AdaptSettings adapt_settings(const Parameters &p, double default_edge_length)
             p.get(Param::denoise),
             p.get(Param::crossing_guard) != 0,
             p.get(Param::volume_correction) != 0,
-            p.get(Param::size_gradation)};
+            p.get(Param::size_gradation),
+            p.get(Param::topology_change) != 0,
+            p.get(Param::merge_distance)};
 }
 
 } // namespace sfa

@@ -48,6 +48,8 @@ struct AdaptSettings {
     bool crossing_guard;  // no step passes the surface through itself (crossing_guard.hpp)
     bool volume_correction; // closed components get their volumes back (restore_enclosed_volumes)
     double size_gradation;  // of a host's size field (size_field.hpp)
+    bool topology_change;   // merges and pinches first (topology_change.hpp)
+    double merge_distance;  // their distance, a ratio of l
 };
 
 FeatureThresholds feature_thresholds(const Parameters &parameters);

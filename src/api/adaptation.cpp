@@ -117,6 +117,7 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
         std::swap(s->components, components);
         s->seconds_spent += counts.seconds;
         s->volume_correction = counts.volume_correction;
+        s->topology = counts.topology;
     });
 }
 

@@ -31,10 +31,10 @@ SurfaceAnalysis current_analysis(const sfa_surface *s)
 
 void require_known_quantity(int quantity)
 {
-    if (quantity < SFA_MEASURE_VOLUME || quantity > SFA_MEASURE_VOLUME_CORRECTION) {
+    if (quantity < SFA_MEASURE_VOLUME || quantity > SFA_MEASURE_DROPS_REMOVED) {
         char message[120];
         std::snprintf(message, sizeof message, "unknown quantity %d (quantities are 0 to %d, enum sfa_measure_quantity)",
-                      quantity, SFA_MEASURE_VOLUME_CORRECTION);
+                      quantity, SFA_MEASURE_DROPS_REMOVED);
         fail(Status::argument, message);
     }
 }
@@ -49,6 +49,10 @@ bool call_measure(const sfa_surface *s, int quantity, double &value)
     case SFA_MEASURE_SECONDS_FLIPPING: value = s->seconds_spent.flipping; return true;
     case SFA_MEASURE_SECONDS_REPAIR: value = s->seconds_spent.repair; return true;
     case SFA_MEASURE_VOLUME_CORRECTION: value = s->volume_correction; return true;
+    case SFA_MEASURE_MERGES: value = s->topology.merges; return true;
+    case SFA_MEASURE_PINCHES: value = s->topology.pinches; return true;
+    case SFA_MEASURE_TOPOLOGY_VOLUME_CHANGE: value = s->topology.volume_change; return true;
+    case SFA_MEASURE_DROPS_REMOVED: value = s->topology.removals; return true;
     default: return false;
     }
 }

@@ -39,6 +39,12 @@ void set_velocities(sfa_surface *s, const double *vel)
     s->velocity.swap(velocity);
 }
 
+// Topology change needs sheets to meet before they pass through each other.
+bool collision_safe(const Parameters &params)
+{
+    return params.get(Param::collision_safe_motion) != 0 || params.get(Param::topology_change) != 0;
+}
+
 } // namespace
 
 extern "C" {
@@ -71,8 +77,7 @@ SFA_EXPORT int sfa_move(sfa_surface *s, double dt, double *dt_taken)
         if (s->velocity.empty())
             fail(Status::state, "no velocities have been set (call sfa_set_velocities first)");
         const double safety = s->params.get(Param::fold_safety);
-        Step step = s->params.get(Param::collision_safe_motion) != 0
-                        ? collision_safe_explicit_step(s->mesh, s->velocity, dt, safety, s->index_base)
+        Step step = collision_safe(s->params) ? collision_safe_explicit_step(s->mesh, s->velocity, dt, safety, s->index_base)
                         : explicit_step(s->mesh, s->velocity, dt, safety, s->index_base);
         s->mesh.pos.swap(step.positions);
         *dt_taken = step.dt_taken;
@@ -91,8 +96,7 @@ SFA_EXPORT int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t
             f(ctx, n, xyz, time, vel);
         };
         const double safety = s->params.get(Param::fold_safety);
-        Step step = s->params.get(Param::collision_safe_motion) != 0
-                        ? collision_safe_rk4_step(s->mesh, field, t, dt, safety, s->index_base)
+        Step step = collision_safe(s->params) ? collision_safe_rk4_step(s->mesh, field, t, dt, safety, s->index_base)
                         : rk4_step(s->mesh, field, t, dt, safety, s->index_base);
         s->mesh.pos.swap(step.positions);
         *dt_taken = step.dt_taken;

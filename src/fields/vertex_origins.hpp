@@ -15,6 +15,7 @@
 #include "mesh/mesh_edit.hpp"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace sfa {
@@ -37,6 +38,8 @@ struct VertexOrigin {
 class OriginHints : public EditListener {
 public:
     explicit OriginHints(const TriMesh &before) { reset(before); }
+    // Hints made already (by a change of topology before the edit begins).
+    explicit OriginHints(std::vector<int32_t> hints) : hints_(std::move(hints)) {}
 
     // Starts over from `before` (the next call), keeping the storage.
     void reset(const TriMesh &before);
