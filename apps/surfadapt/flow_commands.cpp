@@ -32,6 +32,8 @@ bool read_flow_options(int argc, char **argv, int first, FlowRun &run, const cha
             run.crossing_guard = false;
         else if (!std::strcmp(argv[i], "--collision-safe"))
             run.collision_safe = true;
+        else if (!std::strcmp(argv[i], "--topology-change"))
+            run.topology_change = true;
         else if (!std::strcmp(argv[i], "--no-smoothing"))
             run.smoothing = false;
         else if (!std::strcmp(argv[i], "--no-volume-correction"))

@@ -42,17 +42,19 @@ int run_flow(const FlowRun &run, FlowResult &result)
     sfa_set_param(s, SFA_PARAM_DENOISE, run.denoise);
     sfa_set_param(s, SFA_PARAM_CROSSING_GUARD, run.crossing_guard ? 1 : 0);
     sfa_set_param(s, SFA_PARAM_COLLISION_SAFE_MOTION, run.collision_safe ? 1 : 0);
+    sfa_set_param(s, SFA_PARAM_TOPOLOGY_CHANGE, run.topology_change ? 1 : 0);
     sfa_set_param(s, SFA_PARAM_VOLUME_CORRECTION, run.volume_correction ? 1 : 0);
     // Adapted every few steps: one pass per call, the next call picks up what it leaves.
     sfa_set_param(s, SFA_PARAM_ADAPT_PASSES, 1);
 
     const double volume0 = measure(s, SFA_MEASURE_VOLUME), area0 = measure(s, SFA_MEASURE_AREA);
     std::printf("%s: sphere of radius %g at (%g, %g, %g), %d vertices; T = %g, dt = %g, %d steps; %s adaptation "
-                "every %d steps, denoising %g, crossing guard %s, collision-safe motion %s, volume correction %s\n\n",
+                "every %d steps, denoising %g, crossing guard %s, collision-safe motion %s, topology change %s, "
+                "volume correction %s\n\n",
                 run.title, run.radius, run.centre[0], run.centre[1], run.centre[2], nverts, run.period, run.dt,
                 run.steps, run.isotropic ? "isotropic" : "anisotropic", run.adapt_every, run.denoise,
                 run.crossing_guard ? "on" : "off", run.collision_safe ? "on" : "off",
-                run.volume_correction ? "on" : "off");
+                run.topology_change ? "on" : "off", run.volume_correction ? "on" : "off");
     std::printf("%5s %6s %9s %10s %13s %10s %9s %9s %9s %9s %8s\n", "step", "t", "vertices", "triangles",
                 "volume err %", "area ratio", "min angle", "max angle", "max turn", "crossings", "seconds");
     TimeSeries series(run.out_dir, "surface");
@@ -88,6 +90,25 @@ int run_flow(const FlowRun &run, FlowResult &result)
         return 1;
     }
 
+    // With topology change, each event as it happens.
+    const auto adapt = [&](double t) {
+        if (sfa_adapt(s) != SFA_OK)
+            return false;
+        const int merges = static_cast<int>(measure(s, SFA_MEASURE_MERGES));
+        const int pinches = static_cast<int>(measure(s, SFA_MEASURE_PINCHES));
+        const int removed = static_cast<int>(measure(s, SFA_MEASURE_DROPS_REMOVED));
+        if (merges + pinches + removed > 0) {
+            int32_t components = 0;
+            sfa_get_component_count(s, &components);
+            std::printf("      t = %.4f: %d merge(s), %d pinch(es), %d drop(s) removed; %d component(s); volume "
+                        "change %.3g\n",
+                        t, merges, pinches, removed, components, measure(s, SFA_MEASURE_TOPOLOGY_VOLUME_CHANGE));
+        }
+        result.merges += merges;
+        result.pinches += pinches;
+        result.drops_removed += removed;
+        return true;
+    };
     FlowPeriod flow{run.period};
     const auto start = Clock::now();
     double t = 0;
@@ -101,6 +122,10 @@ int run_flow(const FlowRun &run, FlowResult &result)
                 return fail(s, "sfa_advect");
             t += taken;
             ++substeps;
+            // Collision-safe motion cuts the step where two sheets close in: adapting lets
+            // them merge, instead of creeping toward each other in ever smaller steps.
+            if (run.topology_change && taken < 0.5 * (t_end - t + taken) && !adapt(t))
+                return fail(s, "sfa_adapt");
         }
         t = t_end;
         result.advect_seconds += since(phase);
@@ -108,7 +133,7 @@ int run_flow(const FlowRun &run, FlowResult &result)
         // More than two sub-steps: the fold control cut the step to less than half. The
         // adaptation smooths too (sfa_adapt's sweeps), so a step adapted is not smoothed again.
         if (run.adapt_every > 0 && (step % run.adapt_every == 0 || substeps > 2)) {
-            if (sfa_adapt(s) != SFA_OK)
+            if (!adapt(t))
                 return fail(s, "sfa_adapt");
             result.adapt_seconds += since(phase);
         } else if (run.smoothing) {
@@ -147,15 +172,19 @@ int run_flow(const FlowRun &run, FlowResult &result)
                 result.repair_seconds);
     std::printf("the operations of one sfa_smooth or sfa_adapt call changed the volume by at most %.2g (relative)%s\n",
                 result.max_volume_correction, run.volume_correction ? "; the volume correction took it back" : "");
+    if (run.topology_change)
+        std::printf("topology changes: %d merge(s), %d pinch(es), %d drop(s) removed\n", result.merges, result.pinches,
+                    result.drops_removed);
     if (run.json)
         std::printf("{\"bench\":\"flow\",\"flow\":\"%s\",\"anisotropic\":%d,\"denoise\":%g,\"crossing_guard\":%d,"
-                    "\"vertices_start\":%d,"
+                    "\"collision_safe\":%d,\"topology_change\":%d,\"merges\":%d,\"pinches\":%d,\"vertices_start\":%d,"
                     "\"vertices_max\":%d,\"steps\":%d,\"volume_error\":%.3e,\"worst_volume_error\":%.3e,"
                     "\"max_area_ratio\":%.3f,\"max_normal_turn\":%.1f,\"max_self_intersections\":%d,"
                     "\"volume_correction\":%d,\"max_volume_correction\":%.3e,\"seconds\":%.2f,\"advect_s\":%.2f,"
                     "\"smooth_s\":%.2f,\"adapt_s\":%.2f,\"analysis_s\":%.2f,\"smoothing_s\":%.2f,"
                     "\"flipping_s\":%.2f,\"split_contract_s\":%.2f,\"adaptation_over_advection\":%.1f}\n",
-                    run.title, run.isotropic ? 0 : 1, run.denoise, run.crossing_guard ? 1 : 0, nverts, result.max_vertices, run.steps, result.volume_error,
+                    run.title, run.isotropic ? 0 : 1, run.denoise, run.crossing_guard ? 1 : 0, run.collision_safe ? 1 : 0,
+                    run.topology_change ? 1 : 0, result.merges, result.pinches, nverts, result.max_vertices, run.steps, result.volume_error,
                     result.worst_volume_error, result.max_area_ratio, result.max_normal_turn,
                     result.max_self_intersections, run.volume_correction ? 1 : 0, result.max_volume_correction,
                     result.seconds,

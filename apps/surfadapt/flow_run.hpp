@@ -30,6 +30,7 @@ struct FlowRun {
     double denoise = 0;   // SFA_PARAM_DENOISE
     bool crossing_guard = true; // SFA_PARAM_CROSSING_GUARD
     bool collision_safe = false; // SFA_PARAM_COLLISION_SAFE_MOTION
+    bool topology_change = false; // SFA_PARAM_TOPOLOGY_CHANGE
     bool volume_correction = true; // SFA_PARAM_VOLUME_CORRECTION
     bool smoothing = true;  // false: a step that is not adapted is not smoothed either
 };
@@ -41,6 +42,7 @@ struct FlowResult {
     double max_normal_turn = 0;    // degrees, over every step: near 180 at a fold or a cusp
     int max_self_intersections = 0; // at the table's rows: pairs of triangles that cross
     int max_vertices = 0;
+    int merges = 0, pinches = 0, drops_removed = 0; // topology changes, summed over the run
     // The largest SFA_MEASURE_VOLUME_CORRECTION of any sfa_smooth or sfa_adapt call: how far
     // the operations of one call alone moved the volume.
     double max_volume_correction = 0;
