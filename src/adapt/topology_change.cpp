@@ -329,15 +329,8 @@ void Surgery::apply(const PinchPlan &plan)
         mesh_.for_each_neighbour(v, [&](int32_t w, int32_t) { used_[w] = 1; });
     }
     for (int32_t f : around) {
-        Triangle t = tri_[f];
-        if (std::binary_search(plan.left.begin(), plan.left.end(), f))
-            for (int32_t &v : t)
-                for (int k = 0; k < 3; ++k)
-                    if (v == plan.loop[k]) {
-                        v = copies[k];
-                        break;
-                    }
-        replace_triangle(f, t, event); // the right side's too: their corners moved
+        const bool left = std::binary_search(plan.left.begin(), plan.left.end(), f);
+        replace_triangle(f, left ? with_copies(plan, tri_[f], copies) : tri_[f], event); // the right side's corners moved
     }
     for (const Triangle &cap : pinch_caps(plan, copies))
         add_triangle(cap, event);
@@ -377,11 +370,14 @@ void Surgery::remove_tiny_drops()
 
 void Surgery::undo_crossing_events()
 {
-    // Each round undoes at least one event, or ends.
+    // Each round undoes at least one event, or ends. A removal makes no triangle.
+    const auto makes_triangles = [](const Event &e) { return e.live && e.kind != Event::Kind::removal; };
     for (size_t round = 0; round <= events_.size(); ++round) {
+        if (std::none_of(events_.begin(), events_.end(), makes_triangles))
+            return;
         std::vector<int32_t> event_of(tri_.size(), -1);
         for (size_t e = 0; e < events_.size(); ++e) {
-            if (!events_[e].live)
+            if (!makes_triangles(events_[e]))
                 continue;
             for (int32_t f : events_[e].added)
                 event_of[f] = static_cast<int32_t>(e);

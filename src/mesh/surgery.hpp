@@ -45,6 +45,18 @@ struct PinchPlan {
 // corners once each (the loop would not cut it in two).
 bool plan_pinch(const TriMesh &mesh, int32_t a, int32_t b, int32_t c, PinchPlan &plan);
 
+// A triangle of the left side with the loop's corners replaced by their copies.
+inline Triangle with_copies(const PinchPlan &plan, Triangle t, const std::array<int32_t, 3> &copies)
+{
+    for (int32_t &v : t)
+        for (int k = 0; k < 3; ++k)
+            if (v == plan.loop[k]) {
+                v = copies[k];
+                break;
+            }
+    return t;
+}
+
 // The triangles that close the two sides: the left side's with the copies a2, b2, c2 of
 // a, b, c, then the right side's.
 inline std::array<Triangle, 2> pinch_caps(const PinchPlan &plan, const std::array<int32_t, 3> &copies)

@@ -7,13 +7,7 @@
 /* Two spheres of radius 0.2 whose centres are 0.46 apart on the x axis (a gap of 0.06). */
 static sfa_surface *two_drops(void)
 {
-    sfa_mesh_data m = shape_icosphere(3, 0.2);
-    sfa_mesh_data right = shape_icosphere(3, 0.2);
-    const double left_shift[3] = {-0.23, 0, 0}, right_shift[3] = {0.23, 0, 0};
-    mesh_translate(&m, left_shift);
-    mesh_translate(&right, right_shift);
-    mesh_append(&m, &right);
-    mesh_free(&right);
+    sfa_mesh_data m = shape_two_icospheres(3, 0.2, 0.46);
     sfa_surface *s = make_surface(&m, 1);
     mesh_free(&m);
     return s;

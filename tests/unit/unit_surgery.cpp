@@ -85,15 +85,8 @@ TriMesh pinched(const TriMesh &mesh, const PinchPlan &plan)
     for (int32_t v : plan.loop)
         out.pos.push_back(mesh.pos[v]);
     for (int32_t f = 0; f < mesh.num_triangles(); ++f) {
-        Triangle t = mesh.tri[f];
-        if (std::binary_search(plan.left.begin(), plan.left.end(), f))
-            for (int32_t &v : t)
-                for (int k = 0; k < 3; ++k)
-                    if (v == plan.loop[k]) {
-                        v = copies[k];
-                        break;
-                    }
-        out.tri.push_back(t);
+        const bool left = std::binary_search(plan.left.begin(), plan.left.end(), f);
+        out.tri.push_back(left ? with_copies(plan, mesh.tri[f], copies) : mesh.tri[f]);
     }
     for (const Triangle &cap : pinch_caps(plan, copies))
         out.tri.push_back(cap);

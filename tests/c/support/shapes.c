@@ -104,6 +104,17 @@ sfa_mesh_data shape_icosphere(int k, double r)
     return m;
 }
 
+sfa_mesh_data shape_two_icospheres(int k, double r, double distance)
+{
+    sfa_mesh_data m = shape_icosphere(k, r), right = shape_icosphere(k, r);
+    const double left_shift[3] = {-distance / 2, 0, 0}, right_shift[3] = {distance / 2, 0, 0};
+    mesh_translate(&m, left_shift);
+    mesh_translate(&right, right_shift);
+    mesh_append(&m, &right);
+    mesh_free(&right);
+    return m;
+}
+
 sfa_mesh_data shape_icosahedron(double r) { return shape_icosphere(0, r); }
 
 sfa_mesh_data shape_grid(int nx, int ny, double h)

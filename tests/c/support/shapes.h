@@ -32,6 +32,10 @@ sfa_mesh_data shape_icosahedron(double r);
  * 10*4^k + 2 vertices, 20*4^k triangles. */
 sfa_mesh_data shape_icosphere(int k, double r);
 
+/* Two icospheres of shape_icosphere(k, r) whose centres are `distance` apart on the x axis,
+ * either side of the origin: two drops. */
+sfa_mesh_data shape_two_icospheres(int k, double r, double distance);
+
 /* An open, flat patch in the plane z = 0 with nx x ny square cells of side h, normals +z.
  * Vertex (i, j) (0 <= i <= nx, 0 <= j <= ny) is number j*(nx+1) + i, at (i h, j h, 0). */
 sfa_mesh_data shape_grid(int nx, int ny, double h);
