@@ -26,7 +26,7 @@ constexpr double event_spacing = 2;
 // below what the mesh resolves there: it is removed (a drop smaller than that is a
 // tetrahedron or two, and a flow that crushes it would stop the motion).
 constexpr double tiny_drop = 2;
-constexpr double least_parting = 0.2, most_parting = 0.9, parted_by = 1.25;
+constexpr double least_parting = 0.2, most_parting = 0.9, parted_by = 2;
 
 // The closest points of segments p0-p1 and q0-q1 (Ericson, Real-Time Collision Detection,
 // §5.1.9): p0 + s (p1 - p0) and q0 + t (q1 - q0), s and t in [0, 1].
@@ -150,7 +150,8 @@ private:
     std::vector<MergeCandidate> merge_candidates() const;
     std::vector<PinchCandidate> pinch_candidates() const;
     void apply(const ZipperPlan &plan);
-    void apply(const PinchPlan &plan);
+    // False (and nothing done) where the two sides cannot be parted enough.
+    bool apply(const PinchPlan &plan);
     void pool_face_fields(const Event &event, const std::vector<Vec3> &old_pos) const;
 
     const TriMesh &mesh_;
@@ -283,14 +284,12 @@ void Surgery::pinch_thin_necks()
         bool free = true;
         for (int32_t v : plan.loop)
             mesh_.for_each_neighbour(v, [&](int32_t w, int32_t) { free = free && !used_[w]; });
-        if (!free)
-            continue;
-        apply(plan);
-        ++pinches_;
+        if (free && apply(plan))
+            ++pinches_;
     }
 }
 
-void Surgery::apply(const PinchPlan &plan)
+bool Surgery::apply(const PinchPlan &plan)
 {
     Event event{Event::Kind::pinch};
     // The two sides' triangles around the loop, and the centres of their other corners.
@@ -313,8 +312,10 @@ void Surgery::apply(const PinchPlan &plan)
         centre[side] /= std::max(count[side], 1);
     const auto [a, b, c] = plan.loop;
     const double wanted = parted_by * std::max({merge_distance(a, b), merge_distance(b, c), merge_distance(c, a)});
-    const double parting =
-        std::clamp(wanted / (centre[0] - centre[1]).norm(), least_parting, most_parting); // NaN: the least
+    const double needed = wanted / (centre[0] - centre[1]).norm();
+    if (!(needed <= most_parting))
+        return false;
+    const double parting = std::max(needed, least_parting);
 
     std::array<int32_t, 3> copies;
     for (int k = 0; k < 3; ++k) {
@@ -336,6 +337,7 @@ void Surgery::apply(const PinchPlan &plan)
         add_triangle(cap, event);
     event.centre = (pos_[plan.loop[0]] + pos_[plan.loop[1]] + pos_[plan.loop[2]]) / 3;
     events_.push_back(std::move(event));
+    return true;
 }
 
 void Surgery::remove_tiny_drops()

@@ -10,8 +10,9 @@
 //   patch is joined by one tube per call, which the adaptation then widens or leaves.
 // - Pinch: a loop of three edges, each shorter than d, that is not a triangle (a neck or
 //   filament that contraction has thinned to three vertices around) is cut, and each
-//   side's copies of the loop's corners move a fifth of the way to the centre of their
-//   side's neighbours, so that the two closing triangles part.
+//   side's copies of the loop's corners move towards the centre of their side's
+//   neighbours, so that the two closing triangles part by more than d (not yet cut where
+//   they cannot).
 //
 // - Removal: a closed component less than two merge distances across (a drop below what
 //   the mesh resolves, most often what a pinch left between two ends) is removed.
