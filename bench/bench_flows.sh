@@ -6,7 +6,9 @@
 # vertex counts, volume errors, the largest normal turn and crossings, and the ratio of
 # smoothing + adaptation time to bare advection time in the same run. The shorter runs are
 # repeated (RUNS, default 3) and a last line per experiment gives the median time. Enright
-# runs also without the crossing guard, to show what the guard costs. The shape error of
+# runs also without the crossing guard, to show what the guard costs; Enright and vortex
+# T = 2 also with collision-safe motion and with topology change (which makes motion
+# collision-safe too), to show what those cost against the run above them. The shape error of
 # each experiment comes from its checkpoints (bench/fidelity.cpp says how it is measured).
 set -eu
 cd "$(dirname "$0")/.."
@@ -45,7 +47,12 @@ flow() {
 
 flow enright "$runs" enright
 flow enright_no_crossing_guard "$runs" enright --no-crossing-guard
+flow enright_collision_safe "$runs" enright --collision-safe
+flow enright_topology_change "$runs" enright --topology-change
 flow vortex_t2 "$runs" vortex --period 2
+flow vortex_t2_collision_safe "$runs" vortex --period 2 --collision-safe
+flow vortex_t2_topology_change "$runs" vortex --period 2 --topology-change
 flow vortex_t2_isotropic "$runs" vortex --period 2 --isotropic
 flow vortex_t6 1 vortex --period 6
+flow vortex_t6_topology_change 1 vortex --period 6 --topology-change
 flow vortex_t6_isotropic 1 vortex --period 6 --isotropic

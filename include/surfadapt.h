@@ -241,10 +241,12 @@ enum sfa_param {
     SFA_PARAM_COLLISION_SAFE_MOTION = 24,
     /** 1: the surface may change its topology, as bubbles coalesce and drops break up.
         Each sfa_adapt() call first merges two sheets that face each other closer than the
-        merge distance (::SFA_PARAM_MERGE_DISTANCE): the two triangles of the nearest edge
+        merge distance (::SFA_PARAM_MERGE_DISTANCE) across the outer phase (two drops that
+        meet), or nearer than a quarter of it across the inner phase (a bubble's walls
+        pressed together; a merely thin bubble stays whole): the two triangles of the nearest edge
         of each go, and a short tube of eight triangles joins the two holes (two bubbles
-        become one, or a sheet gains a handle; events of one call are at least two desired
-        edge lengths apart). Then it cuts every neck or filament that contraction has
+        become one, a film tears, or a sheet gains a handle; events of one call are at
+        least two desired edge lengths apart). Then it cuts every neck or filament that contraction has
         thinned to a loop of three edges shorter than the merge distance, closing both
         sides with a triangle (one drop becomes two). Both are checked with exact
         predicates and undone where they would make the surface cross itself; vertices the

@@ -94,6 +94,7 @@ int run_flow(const FlowRun &run, FlowResult &result)
     const auto adapt = [&](double t) {
         if (sfa_adapt(s) != SFA_OK)
             return false;
+        ++result.adapt_calls;
         const int merges = static_cast<int>(measure(s, SFA_MEASURE_MERGES));
         const int pinches = static_cast<int>(measure(s, SFA_MEASURE_PINCHES));
         const int removed = static_cast<int>(measure(s, SFA_MEASURE_DROPS_REMOVED));
@@ -122,6 +123,7 @@ int run_flow(const FlowRun &run, FlowResult &result)
                 return fail(s, "sfa_advect");
             t += taken;
             ++substeps;
+            ++result.advect_calls;
             // Collision-safe motion cuts the step where two sheets close in: adapting lets
             // them merge, instead of creeping toward each other in ever smaller steps.
             if (run.topology_change && taken < 0.5 * (t_end - t + taken) && !adapt(t))
@@ -175,6 +177,8 @@ int run_flow(const FlowRun &run, FlowResult &result)
     if (run.topology_change)
         std::printf("topology changes: %d merge(s), %d pinch(es), %d drop(s) removed\n", result.merges, result.pinches,
                     result.drops_removed);
+    std::printf("%d sfa_advect calls for %d steps, %d sfa_adapt calls\n", result.advect_calls, run.steps,
+                result.adapt_calls);
     if (run.json)
         std::printf("{\"bench\":\"flow\",\"flow\":\"%s\",\"anisotropic\":%d,\"denoise\":%g,\"crossing_guard\":%d,"
                     "\"collision_safe\":%d,\"topology_change\":%d,\"merges\":%d,\"pinches\":%d,\"vertices_start\":%d,"

@@ -43,6 +43,7 @@ struct FlowResult {
     int max_self_intersections = 0; // at the table's rows: pairs of triangles that cross
     int max_vertices = 0;
     int merges = 0, pinches = 0, drops_removed = 0; // topology changes, summed over the run
+    int advect_calls = 0, adapt_calls = 0;
     // The largest SFA_MEASURE_VOLUME_CORRECTION of any sfa_smooth or sfa_adapt call: how far
     // the operations of one call alone moved the volume.
     double max_volume_correction = 0;

@@ -17,6 +17,9 @@ namespace {
 
 // Two sheets face each other where their normals are within 60 degrees of opposite.
 constexpr double facing_cosine = -0.5;
+// A film of the inner phase (a bubble's two walls) tears when its walls are nearer than
+// this fraction of the merge distance: a thin bubble stays whole, one pressed flat opens.
+constexpr double film_tearing = 0.25;
 // Events of one call are at least this many desired lengths apart (see the header).
 constexpr double event_spacing = 2;
 // How far a pinch's corners move towards the centre of their side's neighbours, as a
@@ -192,15 +195,20 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
             return;
         const auto [c1, c2] = closest_points(pos_[a1], pos_[b1], pos_[a2], pos_[b2]);
         const double distance = (c2 - c1).norm();
-        if (!(distance < std::min(merge_distance(a1, b1), merge_distance(a2, b2))))
+        const double d = std::min(merge_distance(a1, b1), merge_distance(a2, b2));
+        if (!(distance < d))
             return;
         const Vec3 n1 = edge_normal(h1), n2 = edge_normal(h2);
         if (!(n1.dot(n2) < facing_cosine))
             return;
         // Each on the side of the other its normal points to: the outer phase between
-        // them (where they already touch, facing is enough).
+        // them, two drops meet. Each on the side its normal points away from: a film of
+        // the inner phase, a bubble's walls, which tears only when pressed together.
+        // Where they already touch, facing is enough.
         const Vec3 gap = c2 - c1;
-        if (gap.dot(n1) < 0 || gap.dot(n2) > 0)
+        const double outward = gap.dot(n1), inward = -gap.dot(n2);
+        const bool outer_phase = outward >= 0 && inward >= 0, inner_film = outward <= 0 && inward <= 0;
+        if (!outer_phase && !(inner_film && distance < film_tearing * d))
             return;
         found[static_cast<size_t>(thread_index())].push_back({distance, h1, h2});
     });
