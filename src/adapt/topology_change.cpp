@@ -23,13 +23,15 @@ constexpr double film_tearing = 0.25;
 // Events of one call are at least this many desired lengths apart (see the header).
 constexpr double event_spacing = 2;
 // How far a pinch's corners move towards the centre of their side's neighbours, as a
-// fraction of the way: enough to part the two closing triangles by more than the merge
-// distance (so that the two ends do not merge again at once), within these bounds.
+// fraction of the way: enough to part the two closing triangles by parted_by merge
+// distances, so that the two ends do not merge again at once (at 1.25 they did). Where
+// that would take more than most_parting of the way, the neck is not cut yet: the flow
+// that thins it draws its ends apart.
+constexpr double least_parting = 0.2, most_parting = 0.9, parted_by = 2;
 // A closed component whose box is smaller than this many merge distances across is
 // below what the mesh resolves there: it is removed (a drop smaller than that is a
 // tetrahedron or two, and a flow that crushes it would stop the motion).
 constexpr double tiny_drop = 2;
-constexpr double least_parting = 0.2, most_parting = 0.9, parted_by = 2;
 
 // The closest points of segments p0-p1 and q0-q1 (Ericson, Real-Time Collision Detection,
 // §5.1.9): p0 + s (p1 - p0) and q0 + t (q1 - q0), s and t in [0, 1].
@@ -123,7 +125,7 @@ public:
     // Undoes every event that made or moved a triangle meeting one it shares no corner with.
     void undo_crossing_events();
     // The mesh, the host's data and the hints as the live events left them; the counts.
-    TopologyCounts finish(TriMesh &mesh, std::vector<int32_t> &hints) const;
+    TopologyCounts finish(TriMesh &mesh, std::vector<int32_t> &hints);
 
 private:
     double length_at(int32_t v) const { return data_.size.empty() ? l_ : data_.size[v]; }
@@ -139,11 +141,10 @@ private:
         return std::all_of(events_.begin(), events_.end(),
                            [&](const Event &e) { return (e.centre - x).squaredNorm() >= spacing * spacing; });
     }
-    int32_t add_triangle(const Triangle &t, Event &event)
+    void add_triangle(const Triangle &t, Event &event)
     {
         tri_.push_back(t);
         event.added.push_back(static_cast<int32_t>(tri_.size()) - 1);
-        return event.added.back();
     }
     void replace_triangle(int32_t f, const Triangle &t, Event &event)
     {
@@ -155,7 +156,7 @@ private:
     void apply(const ZipperPlan &plan);
     // False (and nothing done) where the two sides cannot be parted enough.
     bool apply(const PinchPlan &plan);
-    void pool_face_fields(const Event &event, const std::vector<Vec3> &old_pos) const;
+    void pool_face_fields(const Event &event, const std::vector<Vec3> &old_pos);
 
     const TriMesh &mesh_;
     SurfaceData &data_;
@@ -444,7 +445,7 @@ void Surgery::undo_crossing_events()
     }
 }
 
-void Surgery::pool_face_fields(const Event &event, const std::vector<Vec3> &old_pos) const
+void Surgery::pool_face_fields(const Event &event, const std::vector<Vec3> &old_pos)
 {
     // The event's triangles before (those it replaced) and after (the same, now, and those
     // it added) share one density per component: their integral, over their area now.
@@ -473,7 +474,7 @@ void Surgery::pool_face_fields(const Event &event, const std::vector<Vec3> &old_
     }
 }
 
-TopologyCounts Surgery::finish(TriMesh &mesh, std::vector<int32_t> &hints) const
+TopologyCounts Surgery::finish(TriMesh &mesh, std::vector<int32_t> &hints)
 {
     TopologyCounts counts{merges_, pinches_, removals_, 0};
     if (merges_ + pinches_ + removals_ == 0)
