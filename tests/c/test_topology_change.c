@@ -145,6 +145,43 @@ static void drops_driven_together_merge(void **state)
     sfa_destroy(s);
 }
 
+/* Vertices the host fixed take part in no event: with one drop pinned, the two are stopped
+ * apart by the motion (which then fails cleanly) and never merge. */
+static void fixed_vertices_never_merge(void **state)
+{
+    (void)state;
+    sfa_surface *s = two_drops();
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_TOPOLOGY_CHANGE, 1));
+    int32_t nverts = 0, ntris = 0;
+    assert_ok(s, sfa_get_counts(s, &nverts, &ntris));
+    int32_t *left = malloc(sizeof(int32_t) * (size_t)nverts / 2);
+    for (int32_t v = 0; v < nverts / 2; ++v)
+        left[v] = v; /* the first drop's vertices come first */
+    assert_ok(s, sfa_set_fixed_vertices(s, nverts / 2, left, 0));
+    free(left);
+    for (int step = 0; step < 80; ++step) {
+        sfa_mesh_data m = read_back(s);
+        double *vel = malloc(sizeof(double) * 3 * (size_t)m.nverts), dt_taken = 0;
+        for (int32_t v = 0; v < m.nverts; ++v) {
+            vel[3 * v] = m.xyz[3 * v] < 0 ? 0.25 : -0.25;
+            vel[3 * v + 1] = vel[3 * v + 2] = 0;
+        }
+        assert_ok(s, sfa_set_velocities_checked(s, m.nverts, vel));
+        free(vel);
+        mesh_free(&m);
+        const int rc = sfa_move(s, 0.01, &dt_taken);
+        if (rc != SFA_OK) {
+            assert_error(s, rc, SFA_ERR_NUMERIC, "triangles", "closing");
+            break;
+        }
+        assert_ok(s, sfa_adapt(s));
+        assert_true(measure(s, SFA_MEASURE_MERGES) == 0);
+        assert_true(measure(s, SFA_MEASURE_SELF_INTERSECTIONS) == 0);
+    }
+    assert_int_equal(components(s), 2);
+    sfa_destroy(s);
+}
+
 /* v = (x s / 2, -y s, -z s), s = exp(-(x / 0.15)^2): the waist at x = 0 thins as exp(-t). */
 static void squeeze(void *ctx, int32_t n, const double *xyz, double t, double *vel)
 {
@@ -199,6 +236,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(drops_driven_together_merge),
+        cmocka_unit_test(fixed_vertices_never_merge),
         cmocka_unit_test(squeezed_waist_pinches_off),
     };
     return cmocka_run_group_tests_name("test_topology_change", tests, NULL, NULL);
