@@ -372,8 +372,11 @@ void Surgery::remove_tiny_drops()
             continue;
         Event event{Event::Kind::removal};
         event.centre = 0.5 * (lowest + highest);
-        for (int32_t k = first; k < last; ++k)
+        for (int32_t k = first; k < last; ++k) {
+            for (int32_t v : tri_[components.triangles[k]])
+                used_[v] = 1; // no pinch of what is gone
             replace_triangle(components.triangles[k], {-1, -1, -1}, event);
+        }
         events_.push_back(std::move(event));
         ++removals_;
     }
