@@ -165,10 +165,11 @@ enum sfa_param {
         of the two triangles after the flip, is at most this. Ridge and boundary edges are
         never flipped. Degrees, in (0, 180); default 20. */
     SFA_PARAM_FLIP_DIHEDRAL_ANGLE = 16,
-    /** Threads of the per-vertex and per-edge loops (OpenMP): 0 uses OpenMP's default
-        (OMP_NUM_THREADS, else every core); n >= 1 uses at most n, so that an MPI host can
-        keep one thread per rank. Results never depend on it. Threads, a whole number
-        in [0, 4096]; default 0. */
+    /** Threads of the per-vertex and per-edge loops (OpenMP): 0 uses OMP_NUM_THREADS
+        when it is set, else the CPUs the process may run on at the time of the call (its
+        affinity mask, read at every call, so that an MPI rank bound to one core uses one
+        thread); n >= 1 uses at most n, so that an MPI host can keep one thread per rank.
+        Results never depend on it. Threads, a whole number in [0, 4096]; default 0. */
     SFA_PARAM_THREADS = 17,
     /** Denoising weight w (paper §5.1, §5.2.2); 0 is off. Each smoothing sweep
         (sfa_smooth(), and those of sfa_adapt()) then also moves every smooth vertex

@@ -22,7 +22,11 @@ int loop_threads();
 // loop.
 int thread_index();
 
-// Sets this thread's limit for its lifetime (0: OpenMP's default), and restores the
+// The threads a call uses when the host sets none: OMP_NUM_THREADS when it is set, else
+// the CPUs the process may run on now (its affinity mask), at most OpenMP's default.
+int default_threads();
+
+// Sets this thread's limit for its lifetime (0: default_threads()), and restores the
 // previous one after. The C boundary sets it from SFA_PARAM_THREADS around every call, so
 // concurrent handles in different threads each keep their own.
 class ThreadLimit {
