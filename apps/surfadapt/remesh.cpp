@@ -13,6 +13,13 @@
 
 namespace {
 
+double parameter(const sfa_surface *s, int key)
+{
+    double value = 0;
+    sfa_get_param(s, key, &value);
+    return value;
+}
+
 void print_quality_row(const char *label, const Quality &q, double volume0, double seconds)
 {
     std::printf("  %-8s %9d %9d %13.2e %10.4f %9.2f %9.2f %9.1f %8d %8d %8.2f\n", label, q.vertices, q.triangles,
@@ -36,15 +43,38 @@ int remesh_surface(sfa_surface *s, const char *name, double edge_length, bool is
     std::printf("  %-8s %9s %9s %13s %10s %9s %9s %9s %8s %8s %8s\n", "", "vertices", "triangles", "volume change",
                 "mean edge", "min angle", "max angle", "% good", "corners", "ridges", "seconds");
     print_quality_row("input", before, before.volume, 0);
+    // One sfa_adapt call changes the size by a bounded factor (a contraction at most
+    // halves an edge's count along a line per pass), so a mesh far from l needs several.
+    // The calls stop when one changes the vertex count by less than settled_change.
+    constexpr int most_calls = 12;
+    constexpr double settled_change = 0.01;
     const auto start = std::chrono::steady_clock::now();
-    for (int call = 0; call < 3; ++call)
+    int calls = 0;
+    double change = 1;
+    for (int32_t vertices = before.vertices; calls < most_calls && change >= settled_change;) {
         if (sfa_adapt(s) != SFA_OK) {
             std::fprintf(stderr, "surfadapt: sfa_adapt: %s\n", sfa_last_error(s));
             return 1;
         }
+        ++calls;
+        int32_t now = 0, triangles = 0;
+        sfa_get_counts(s, &now, &triangles);
+        change = std::fabs(static_cast<double>(now - vertices)) / vertices;
+        vertices = now;
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    print_quality_row("output", quality_of(s), before.volume, seconds);
+    const Quality after = quality_of(s);
+    print_quality_row("output", after, before.volume, seconds);
     std::printf("  (%% good: triangles with every angle in [15, 160] degrees; corners and ridges as detected)\n");
+    if (change < settled_change)
+        std::printf("  settled after %d sfa_adapt calls (the last changed the vertex count by %.2g %%): mean edge "
+                    "%.4g, %.2f l;\n  edges settle between %g l and %g l, shorter across ridges and tight curves\n",
+                    calls, 100 * change, after.mean_edge, after.mean_edge / edge_length,
+                    parameter(s, SFA_PARAM_SHORT_EDGE_RATIO), parameter(s, SFA_PARAM_SPLIT_LENGTH_RATIO));
+    else
+        std::printf("  not settled after %d sfa_adapt calls: the last changed the vertex count by %.2g %%; mean edge "
+                    "%.4g, %.2f l\n",
+                    calls, 100 * change, after.mean_edge, after.mean_edge / edge_length);
     std::printf("  the operations of the last sfa_adapt changed a closed component's volume by at most %.2g "
                 "(relative), which the volume correction took back\n",
                 measure(s, SFA_MEASURE_VOLUME_CORRECTION));

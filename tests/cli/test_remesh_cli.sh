@@ -37,6 +37,13 @@ check "info on two cubes exits 0" sh -c "'$tool' info '$work/pair.obj' >'$work/i
 check "... and counts two closed components" grep -q "^  2 components: 2 closed, 0 open$" "$work/info"
 check "... and warns that the second is inside-out" grep -q "closed component 1 is inside-out" "$work/info"
 check "... and not the first" sh -c "! grep -q 'component 0 is inside-out' '$work/info'"
+# From 8 vertices to an edge of 0.05 is more than one sfa_adapt call can do: the command
+# keeps calling until the size settles, and says so.
+check "remesh the cube at edge length 0.05 exits 0" \
+  sh -c "'$tool' remesh '$work/cube.obj' '$vtk' --edge-length 0.05 >'$work/fine'"
+ratio=$(sed -n 's/.*settled after [0-9]* sfa_adapt calls.*mean edge [0-9.e+-]*, \([0-9.]*\) l;$/\1/p' "$work/fine")
+check "... says that it settled, with the mean edge in units of l (got '$ratio')" [ -n "$ratio" ]
+check "... between 0.8 l and 1.2 l" awk -v r="$ratio" 'BEGIN { exit !(r >= 0.8 && r <= 1.2) }'
 check "--isotropic works too" "$tool" remesh "$work/cube.obj" "$work/iso.vtk" --edge-length 0.25 --isotropic
 
 check "a missing input fails" sh -c "! '$tool' remesh '$work/missing.obj' '$work/x.vtk' 2>'$work/err'"
