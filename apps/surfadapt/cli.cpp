@@ -7,10 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <algorithm>
 #include <cstring>
-#include <map>
-#include <utility>
 #include <vector>
 
 #include <cerrno>
@@ -196,44 +193,3 @@ bool write_surface_vtk(const sfa_surface *s, const char *path, const std::string
     return write_vtk_features(path, title.substr(0, 255).c_str(), vtk, error);
 }
 
-void print_components(const sfa_surface *s)
-{
-    int32_t nverts = 0, ntris = 0, count = 0;
-    sfa_get_counts(s, &nverts, &ntris);
-    if (sfa_get_component_count(s, &count) != SFA_OK)
-        return;
-    std::vector<double> xyz(3 * static_cast<size_t>(nverts));
-    std::vector<int32_t> tris(3 * static_cast<size_t>(ntris)), component(static_cast<size_t>(nverts));
-    sfa_get_mesh(s, nverts, xyz.data(), ntris, tris.data(), 0);
-    sfa_get_components(s, nverts, component.data());
-    // An edge with one triangle is on the boundary: (smaller, larger) pairs seen once.
-    std::map<std::pair<int32_t, int32_t>, int> uses;
-    for (int32_t t = 0; t < ntris; ++t)
-        for (int k = 0; k < 3; ++k) {
-            const int32_t a = tris[3 * t + k], b = tris[3 * t + (k + 1) % 3];
-            ++uses[{std::min(a, b), std::max(a, b)}];
-        }
-    std::vector<int32_t> boundary_edges(static_cast<size_t>(count), 0);
-    for (const auto &edge : uses)
-        if (edge.second == 1)
-            ++boundary_edges[component[edge.first.first]];
-    const int32_t open = static_cast<int32_t>(
-        std::count_if(boundary_edges.begin(), boundary_edges.end(), [](int32_t e) { return e > 0; }));
-    std::printf("  %d component%s: %d closed, %d open\n", count, count == 1 ? "" : "s", count - open, open);
-    for (int32_t c = 0; c < count; ++c) {
-        double volume = 0, area = 0;
-        sfa_measure_component(s, c, SFA_MEASURE_VOLUME, &volume);
-        sfa_measure_component(s, c, SFA_MEASURE_AREA, &area);
-        if (c < 10) {
-            if (boundary_edges[c] > 0)
-                std::printf("    %d: open (%d boundary edges), area %.6g\n", c, boundary_edges[c], area);
-            else
-                std::printf("    %d: closed, volume %.6g, area %.6g\n", c, volume, area);
-        } else if (c == 10)
-            std::printf("    ... and %d more\n", count - 10);
-        if (boundary_edges[c] == 0 && volume < 0)
-            std::printf("  warning: closed component %d is inside-out (volume %.6g < 0): its triangles are "
-                        "clockwise seen from outside\n",
-                        c, volume);
-    }
-}

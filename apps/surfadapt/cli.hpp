@@ -39,11 +39,6 @@ struct Quality {
 };
 Quality quality_of(const sfa_surface *s);
 
-// Prints the surface's components: how many, and for each (the first 10) whether it is
-// closed or open (with its boundary edges), its volume and area; warns of a closed one that
-// is inside-out (negative volume: its triangles are clockwise seen from outside).
-void print_components(const sfa_surface *s);
-
 // The surface, its ridge edges and per-vertex analysis as legacy VTK (vtk_writer.h).
 // Returns false with the reason in `error`.
 bool write_surface_vtk(const sfa_surface *s, const char *path, const std::string &title, std::string &error);

@@ -2,6 +2,7 @@
 // surfadapt info and surfadapt features: what the library sees in a mesh.
 #include "cli.hpp"
 #include "commands.hpp"
+#include "component_report.hpp"
 
 #include <cstdio>
 #include <string>
@@ -27,7 +28,7 @@ int info_command(int argc, char **argv)
                 measure(s, SFA_MEASURE_MAX_ANGLE), measure(s, SFA_MEASURE_MAX_ASPECT_RATIO));
     std::printf("  edge length: min %.6g, mean %.6g, max %.6g\n", measure(s, SFA_MEASURE_MIN_EDGE_LENGTH),
                 measure(s, SFA_MEASURE_MEAN_EDGE_LENGTH), measure(s, SFA_MEASURE_MAX_EDGE_LENGTH));
-    print_components(s);
+    print_components(summarize_components(s));
     sfa_destroy(s);
     return 0;
 }

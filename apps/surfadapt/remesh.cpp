@@ -4,12 +4,15 @@
 
 #include "cli.hpp"
 #include "commands.hpp"
+#include "component_report.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -39,7 +42,8 @@ int remesh_surface(sfa_surface *s, const char *name, double edge_length, bool is
     const Quality before = quality_of(s);
     std::printf("%s remeshed %s at edge length %g:\n", name, isotropic ? "isotropically" : "anisotropically",
                 edge_length);
-    print_components(s);
+    const std::vector<ComponentSummary> components = summarize_components(s);
+    print_components(components);
     std::printf("  %-8s %9s %9s %13s %10s %9s %9s %9s %8s %8s %8s\n", "", "vertices", "triangles", "volume change",
                 "mean edge", "min angle", "max angle", "% good", "corners", "ridges", "seconds");
     print_quality_row("input", before, before.volume, 0);
@@ -66,6 +70,8 @@ int remesh_surface(sfa_surface *s, const char *name, double edge_length, bool is
     const Quality after = quality_of(s);
     print_quality_row("output", after, before.volume, seconds);
     std::printf("  (%% good: triangles with every angle in [15, 160] degrees; corners and ridges as detected)\n");
+    std::printf("  after:\n");
+    print_components(summarize_components(s), &components);
     if (change < settled_change)
         std::printf("  settled after %d sfa_adapt calls (the last changed the vertex count by %.2g %%): mean edge "
                     "%.4g, %.2f l;\n  edges settle between %g l and %g l, shorter across ridges and tight curves\n",
@@ -75,9 +81,10 @@ int remesh_surface(sfa_surface *s, const char *name, double edge_length, bool is
         std::printf("  not settled after %d sfa_adapt calls: the last changed the vertex count by %.2g %%; mean edge "
                     "%.4g, %.2f l\n",
                     calls, 100 * change, after.mean_edge, after.mean_edge / edge_length);
-    std::printf("  the operations of the last sfa_adapt changed a closed component's volume by at most %.2g "
-                "(relative), which the volume correction took back\n",
-                measure(s, SFA_MEASURE_VOLUME_CORRECTION));
+    if (std::any_of(components.begin(), components.end(), [](const ComponentSummary &c) { return c.closed(); }))
+        std::printf("  the operations of the last sfa_adapt changed a closed component's volume by at most %.2g "
+                    "(relative), which the volume correction took back\n",
+                    measure(s, SFA_MEASURE_VOLUME_CORRECTION));
     if (out) {
         std::string error;
         if (!write_surface_vtk(s, out, std::string("surfadapt remesh of ") + name, error)) {

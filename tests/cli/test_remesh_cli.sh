@@ -44,6 +44,23 @@ check "remesh the cube at edge length 0.05 exits 0" \
 ratio=$(sed -n 's/.*settled after [0-9]* sfa_adapt calls.*mean edge [0-9.e+-]*, \([0-9.]*\) l;$/\1/p' "$work/fine")
 check "... says that it settled, with the mean edge in units of l (got '$ratio')" [ -n "$ratio" ]
 check "... between 0.8 l and 1.2 l" awk -v r="$ratio" 'BEGIN { exit !(r >= 0.8 && r <= 1.2) }'
+# A torus (genus 1) of 12 x 8 quads, and the cube without its top (one boundary loop).
+awk 'BEGIN { n = 12; m = 8; pi = atan2(0, -1)
+  for (i = 0; i < n; ++i) for (j = 0; j < m; ++j) {
+    u = 2 * pi * i / n; w = 2 * pi * j / m
+    printf "v %.12g %.12g %.12g\n", (1 + 0.4 * cos(w)) * cos(u), (1 + 0.4 * cos(w)) * sin(u), 0.4 * sin(w) }
+  for (i = 0; i < n; ++i) for (j = 0; j < m; ++j) {
+    a = i * m + j + 1; b = ((i + 1) % n) * m + j + 1; c = ((i + 1) % n) * m + (j + 1) % m + 1; d = i * m + (j + 1) % m + 1
+    printf "f %d %d %d\nf %d %d %d\n", a, b, c, a, c, d } }' >"$work/torus.obj"
+check "info on a torus exits 0" sh -c "'$tool' info '$work/torus.obj' >'$work/info'"
+check "... and gives it genus 1" grep -q "^    0: closed, genus 1, volume" "$work/info"
+check "... and the cube genus 0" sh -c "'$tool' info '$work/cube.obj' | grep -q '^    0: closed, genus 0, volume'"
+grep -v '^f 5 6 7$' "$work/cube.obj" | grep -v '^f 5 7 8$' >"$work/open.obj"
+check "info on the cube without its top exits 0" sh -c "'$tool' info '$work/open.obj' >'$work/info'"
+check "... and finds one boundary loop of 4 edges" \
+  grep -q "^    0: open, genus 0, 1 boundary loop (4 edges), area 5$" "$work/info"
+check "remesh gives each closed component's volume change" \
+  sh -c "'$tool' remesh '$work/pair.obj' '$work/pair.vtk' --edge-length 0.3 | grep -c 'closed, genus 0, .*volume change' | grep -qx 2"
 check "--isotropic works too" "$tool" remesh "$work/cube.obj" "$work/iso.vtk" --edge-length 0.25 --isotropic
 
 check "a missing input fails" sh -c "! '$tool' remesh '$work/missing.obj' '$work/x.vtk' 2>'$work/err'"
