@@ -9,7 +9,8 @@
 #   make bench      benchmarks, one JSON line per case
 #   make fuzz       FUZZ_SECONDS=60 : each libFuzzer harness for that long (clang)
 #   make doc        the HTML reference (Doxygen; warnings are errors)
-#   make install    PREFIX=/usr/local DESTDIR= : header, libraries, .mod, tool, pkg-config, CMake
+#   make install    PREFIX=/usr/local DESTDIR= : header, libraries, .mod and its .f90, Python
+#                   module, tool, pkg-config, CMake
 #   make uninstall  PREFIX=/usr/local DESTDIR= : removes exactly what make install put there
 # Missing Debian packages are installed when run as root, or named otherwise
 # (scripts/ensure-deps.sh).
