@@ -81,6 +81,14 @@ $cc tests/install/host.c -o "$work/host" $flags -lm || fail "compile and link th
 LD_LIBRARY_PATH=$root/lib "$work/host" || fail "run the host linked against the shared library"
 echo "ok - host linked against the shared library runs"
 
+# The README's way to need no LD_LIBRARY_PATH: the libdir pkg-config names as RUNPATH.
+libdir=$(pkg-config --variable=libdir surfadapt) || fail "pkg-config --variable=libdir surfadapt"
+# shellcheck disable=SC2086
+$cc tests/install/host.c -o "$work/host-rpath" $flags -lm -Wl,-rpath,"$libdir" ||
+  fail "link the host with -Wl,-rpath,\$(pkg-config --variable=libdir surfadapt)"
+env -u LD_LIBRARY_PATH "$work/host-rpath" || fail "run the host linked with an rpath, without LD_LIBRARY_PATH"
+echo "ok - host linked with -Wl,-rpath,$libdir runs without LD_LIBRARY_PATH"
+
 static_flags=$(pkg-config --static --cflags --libs surfadapt) || fail "pkg-config --static"
 # shellcheck disable=SC2086
 $cc -static tests/install/host.c -o "$work/host-static" $static_flags ||
