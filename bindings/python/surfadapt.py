@@ -131,7 +131,10 @@ class SurfadaptError(Exception):
     (sfa_last_error(), which names the offending element), `function` the C function."""
 
     def __init__(self, status, message, function=""):
-        self.status = Status(status) if status in Status._value2member_map_ else status
+        try:
+            self.status = Status(status)
+        except ValueError:  # a code this module does not know: keep the number
+            self.status = status
         self.message = message
         self.function = function
         super().__init__(status, message)
@@ -417,7 +420,9 @@ class Surface:
     """One adaptive surface (an sfa_surface handle).
 
     Surface() is empty; Surface(xyz, tris) sets a mesh at once. Use it as a context
-    manager or call close(); an unclosed surface is freed when collected."""
+    manager or call close(); an unclosed surface is freed when collected. As in C, one
+    surface is for one thread at a time; different surfaces may be used from different
+    threads at once (ctypes releases the GIL during every call)."""
 
     def __init__(self, xyz=None, tris=None, index_base=0, library=None):
         self._h = None
