@@ -188,8 +188,11 @@ _dbl = ctypes.c_double
 # typedef void (*sfa_velocity_fn)(void *ctx, int32_t n, const double *xyz, double t, double *vel);
 VELOCITY_FN = ctypes.CFUNCTYPE(None, ctypes.c_void_p, _i32, _double_p, _dbl, _double_p)
 
-# name: (restype, argtypes). Every function of the header but sfa_get_api (the table is
-# for C plugin hosts; ctypes resolves the symbols directly).
+# name: (restype, argtypes). Every function of the header except sfa_get_api (the table
+# is for C plugin hosts; ctypes resolves the symbols directly) and the unchecked
+# sfa_set_velocities, sfa_add_field, sfa_add_face_field and sfa_set_size_field: their
+# _checked variants do the same and refuse an array made for another count instead of
+# reading past its end.
 _PROTOTYPES = {
     "sfa_version_string": (ctypes.c_char_p, []),
     "sfa_abi_version": (_int, []),
@@ -237,6 +240,15 @@ class Library:
             self.lib = ctypes.CDLL(path)
         except OSError as e:
             raise OSError(f"surfadapt: cannot load the shared library {path!r}: {e}") from e
+        # The ABI first: a library of another ABI may lack functions, or have other ones.
+        try:
+            abi_version = self.lib.sfa_abi_version
+        except AttributeError as e:
+            raise OSError(f"surfadapt: {path!r} has no function sfa_abi_version: not surfadapt") from e
+        abi_version.restype, abi_version.argtypes = _int, []
+        abi = abi_version()
+        if abi != ABI_VERSION:
+            raise OSError(f"surfadapt: {path!r} has ABI version {abi}; this module is written for ABI {ABI_VERSION}")
         for name, (restype, argtypes) in _PROTOTYPES.items():
             try:
                 function = getattr(self.lib, name)
@@ -245,9 +257,6 @@ class Library:
                               f"(this module needs version {SFA_VERSION_MAJOR}.{SFA_VERSION_MINOR} or later)") from e
             function.restype = restype
             function.argtypes = argtypes
-        abi = self.lib.sfa_abi_version()
-        if abi != ABI_VERSION:
-            raise OSError(f"surfadapt: {path!r} has ABI version {abi}; this module is written for ABI {ABI_VERSION}")
 
 
 _loaded = None
