@@ -3,12 +3,14 @@
 #   make            the libraries, the Fortran module and the command-line tool
 #   make demo       build and run the demonstration
 #   make test       the fast tier: unit and C tests of the optimized build (about a minute)
-#   make check      build and run every test (C, unit, Fortran, plugin, ABI, install, command
-#                   line, sanitizers); what CI runs
+#   make check      build and run every test (C, unit, Fortran, Python, plugin, ABI, install,
+#                   command line, sanitizers); what CI runs
+#   make check-python  the Python binding's tests alone (Debian's python3-numpy)
 #   make bench      benchmarks, one JSON line per case
 #   make fuzz       FUZZ_SECONDS=60 : each libFuzzer harness for that long (clang)
 #   make doc        the HTML reference (Doxygen; warnings are errors)
-#   make install    PREFIX=/usr/local DESTDIR= : header, libraries, .mod, tool, pkg-config, CMake
+#   make install    PREFIX=/usr/local DESTDIR= : header, libraries, .mod and its .f90, Python
+#                   module, tool, pkg-config, CMake
 #   make uninstall  PREFIX=/usr/local DESTDIR= : removes exactly what make install put there
 # Missing Debian packages are installed when run as root, or named otherwise
 # (scripts/ensure-deps.sh).
@@ -87,7 +89,7 @@ REPLAYS      := $(FUZZERS:%=build/san/tests/replay_%)
 
 TEST_RPATH := -Wl,-rpath,'$$ORIGIN/../../lib'
 
-.PHONY: all deps deps-check deps-doc test check demo bench doc install uninstall clean abi-check abi-baseline fuzz
+.PHONY: all deps deps-check deps-doc test check check-python demo bench doc install uninstall clean abi-check abi-baseline fuzz
 .DEFAULT_GOAL := all
 # Keep object files of pattern-built programs, so that rebuilds are incremental.
 .SECONDARY:
@@ -208,10 +210,15 @@ test: deps-check $(UNIT_TESTS) $(C_TESTS)
 check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE) $(C_EXAMPLE) $(PLUGIN_TEST) $(FIDELITY) $(SAN_TESTS) \
        $(SAN_UNIT_TESTS) $(REPLAYS)
 	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) "$(FORTRAN_EXAMPLE) 60" $(C_EXAMPLE) \
-	  "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" \
+	  tests/python/run.sh "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" \
 	  tests/install/test_install.sh tests/cli/test_features_cli.sh tests/cli/test_remesh_cli.sh tests/cli/test_flows_cli.sh \
 	  tests/cli/test_fidelity.sh tests/readme/test_readme_programs.sh $(SAN_TESTS) $(SAN_UNIT_TESTS) \
 	  $(foreach f,$(FUZZERS),"build/san/tests/replay_$(f) tests/fuzz/corpus/$(f) tests/fuzz/crashes/$(f)")
+
+# The Python binding (bindings/python) needs nothing built but the shared library: the
+# script runs Debian's /usr/bin/python3, which python3-numpy serves (see the script).
+check-python: deps-check $(LIB_SO) $(LIB_DEV)
+	@scripts/run-tests.sh tests/python/run.sh
 
 # ------------------------------------------------------------------ fuzzing
 # libFuzzer harnesses, tests/fuzz/fuzz_*.c: each checks the library's contract after every

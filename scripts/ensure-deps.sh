@@ -22,6 +22,10 @@ case " $need " in
     [ -n "$(ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.asan-x86_64.a 2>/dev/null)" ] ||
       missing="$missing libclang-rt-dev"
     have_cmd pkg-config || missing="$missing pkg-config"
+    # The Python binding's test runs Debian's own interpreter, the one python3-numpy
+    # serves: a python3 earlier on PATH (pyenv, a venv) may lack numpy.
+    { [ -x /usr/bin/python3 ] && /usr/bin/python3 -c 'import numpy' 2>/dev/null; } ||
+      missing="$missing python3-numpy"
     ;;
 esac
 case " $need " in

@@ -9,7 +9,8 @@
 #   file MODE SOURCE TARGET   a copy of SOURCE (relative to the top of the tree)
 #   link POINTS_TO TARGET     a symbolic link
 #   template SOURCE TARGET    SOURCE with @PREFIX@, @VERSION@ and @SOVERSION@ filled in
-# own_directories lists the directories, relative to PREFIX, that only this package uses.
+# own_directories lists the directories, relative to PREFIX, that only this package uses,
+# deepest first; made_by_use the files that using the package makes in them (patterns).
 
 # The variables it sets are for the script that sources this file.
 # shellcheck disable=SC2034
@@ -42,6 +43,13 @@ file 644 lib/libsurfadapt.a lib/libsurfadapt.a
 file 644 lib/libsurfadapt_fortran.a lib/libsurfadapt_fortran.a
 # Beside the C header, so that one -I serves C and Fortran hosts.
 file 644 lib/fortran/surfadapt.mod include/surfadapt.mod
+# The module's source beside it: a .mod is gfortran's own format, so a host built with
+# another compiler (ifx, nvfortran, Cray ftn, flang) compiles this with its sources.
+file 644 bindings/fortran/surfadapt.f90 include/surfadapt.f90
+# The Python module, pure Python: in a directory of its own rather than a site-packages
+# path, which differs between Python versions and distributions. Hosts put it on
+# PYTHONPATH; it finds PREFIX/lib/libsurfadapt.so.$soversion relative to itself.
+file 644 bindings/python/surfadapt.py share/surfadapt/python/surfadapt.py
 # Its RUNPATH \$ORIGIN/../lib finds the library in the installed tree as in the build tree.
 file 755 bin/surfadapt bin/surfadapt
 template cmake/surfadapt.pc.in lib/pkgconfig/surfadapt.pc
@@ -55,4 +63,13 @@ EOF
 own_directories() {
   echo lib/cmake/surfadapt
   echo share/doc/surfadapt
+  echo share/surfadapt/python/__pycache__
+  echo share/surfadapt/python
+  echo share/surfadapt
+}
+
+# Python writes the module's byte code beside it on import when it may (installed as
+# root, imported as root); uninstall removes it with the module.
+made_by_use() {
+  echo 'share/surfadapt/python/__pycache__/surfadapt.*.pyc'
 }

@@ -1,8 +1,8 @@
 #!/bin/sh
 # SPDX-License-Identifier: BSD-3-Clause
 # Installs surfadapt under DESTDIR/PREFIX: header, shared library with its SONAME and
-# development symlinks, static libraries, Fortran module, command-line tool, pkg-config
-# file and CMake package (the items of install-manifest.sh). Run from the top of the tree
+# development symlinks, static libraries, Fortran module and its source, Python module,
+# command-line tool, pkg-config file and CMake package (the items of install-manifest.sh). Run from the top of the tree
 # after `make` (make install does).
 # Usage: install.sh DESTDIR PREFIX VERSION SOVERSION   (DESTDIR may be empty)
 set -eu

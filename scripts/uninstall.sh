@@ -1,7 +1,8 @@
 #!/bin/sh
 # SPDX-License-Identifier: BSD-3-Clause
 # Removes from DESTDIR/PREFIX exactly what install.sh put there (the items of
-# install-manifest.sh) and the package's own directories once they are empty; shared
+# install-manifest.sh), what using them made beside them (Python's byte code of the
+# module), and the package's own directories once they are empty; shared
 # directories such as PREFIX/lib stay, and so does anything else in them. Run it from
 # the tree of the version that was installed: the shared library's name carries it.
 # Usage: uninstall.sh DESTDIR PREFIX VERSION SOVERSION   (DESTDIR may be empty)
@@ -28,6 +29,14 @@ while read -r kind _ b c; do
 done <<ITEMS
 $(manifest | grep -v '^#')
 ITEMS
+
+made_by_use | while read -r pattern; do
+  # The pattern is expanded under $root, on purpose; no match leaves it as it is.
+  # shellcheck disable=SC2086
+  for file in "$root"/$pattern; do
+    if [ -f "$file" ]; then rm -f "$file"; fi
+  done
+done
 
 for dir in $(own_directories); do
   if [ -d "$root/$dir" ] && ! rmdir "$root/$dir" 2>/dev/null; then
