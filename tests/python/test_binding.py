@@ -327,7 +327,7 @@ class Fields(unittest.TestCase):
 
 
 class Programs(unittest.TestCase):
-    """The example and the README's program, run as a user runs them."""
+    """The example, and the module as a user loads it (tests/readme runs the README's program)."""
 
     def run_python(self, args, cwd=None, **env):
         env = dict(os.environ, OMP_WAIT_POLICY=os.environ.get("OMP_WAIT_POLICY", "passive"), **env)
@@ -348,18 +348,6 @@ class Programs(unittest.TestCase):
                                 "matplotlib is there, but no plot was written")
             else:
                 self.assertIn("skipped the plot", r.stdout)
-
-    def test_readme_program(self):
-        with open(os.path.join(ROOT, "README.md"), encoding="utf-8") as f:
-            readme = f.read()
-        section = readme.split("\n## Using it from Python\n", 1)
-        self.assertEqual(len(section), 2, "README.md has no section 'Using it from Python'")
-        program = re.search(r"```python\n(.*?)```", section[1], flags=re.S)
-        self.assertIsNotNone(program, "no ```python block in the README's Python section")
-        # As the README says to run it: from the top of the tree, the module on PYTHONPATH.
-        r = self.run_python(["-c", program.group(1)], cwd=ROOT, PYTHONPATH=os.path.join("bindings", "python"))
-        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
-        self.assertIn("sfa_set_mesh: triangle", r.stdout)
 
     def test_a_surface_left_open_at_exit_is_freed_quietly(self):
         r = self.run_python(["-c", "import surfadapt; s = surfadapt.Surface(*surfadapt.icosphere(1))"],
