@@ -5,6 +5,7 @@
 #include "cli.hpp"
 #include "flows.hpp"
 #include "icosphere.h"
+#include "progress.hpp"
 #include "time_series.hpp"
 
 #include <algorithm>
@@ -90,6 +91,7 @@ int run_flow(const FlowRun &run, FlowResult &result)
         return 1;
     }
 
+    Progress progress;
     // With topology change, each event as it happens.
     const auto adapt = [&](double t) {
         if (sfa_adapt(s) != SFA_OK)
@@ -99,6 +101,7 @@ int run_flow(const FlowRun &run, FlowResult &result)
         const int pinches = static_cast<int>(measure(s, SFA_MEASURE_PINCHES));
         const int removed = static_cast<int>(measure(s, SFA_MEASURE_DROPS_REMOVED));
         if (merges + pinches + removed > 0) {
+            progress.clear();
             int32_t components = 0;
             sfa_get_component_count(s, &components);
             std::printf("      t = %.4f: %d merge(s), %d pinch(es), %d drop(s) removed; %d component(s); volume "
@@ -155,7 +158,12 @@ int run_flow(const FlowRun &run, FlowResult &result)
         int32_t v = 0, tcount = 0;
         sfa_get_counts(s, &v, &tcount);
         result.max_vertices = std::max(result.max_vertices, static_cast<int>(v));
-        if (((step % run.report_every == 0 || step == run.steps) && !report(step, t)) || !save(step, t)) {
+        const bool row = step % run.report_every == 0 || step == run.steps;
+        if (row)
+            progress.clear();
+        else
+            progress.show("step %d of %d, t = %.3f, %d vertices", step, run.steps, t, v);
+        if ((row && !report(step, t)) || !save(step, t)) {
             std::fprintf(stderr, "surfadapt: %s\n", error.c_str());
             sfa_destroy(s);
             return 1;

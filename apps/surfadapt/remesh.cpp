@@ -5,6 +5,7 @@
 #include "cli.hpp"
 #include "commands.hpp"
 #include "component_report.hpp"
+#include "progress.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -55,7 +56,9 @@ int remesh_surface(sfa_surface *s, const char *name, double edge_length, bool is
     const auto start = std::chrono::steady_clock::now();
     int calls = 0;
     double change = 1;
+    Progress progress;
     for (int32_t vertices = before.vertices; calls < most_calls && change >= settled_change;) {
+        progress.show("sfa_adapt call %d, from %d vertices", calls + 1, vertices);
         if (sfa_adapt(s) != SFA_OK) {
             std::fprintf(stderr, "surfadapt: sfa_adapt: %s\n", sfa_last_error(s));
             return 1;
@@ -66,6 +69,7 @@ int remesh_surface(sfa_surface *s, const char *name, double edge_length, bool is
         change = std::fabs(static_cast<double>(now - vertices)) / vertices;
         vertices = now;
     }
+    progress.clear();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const Quality after = quality_of(s);
     print_quality_row("output", after, before.volume, seconds);
