@@ -47,7 +47,7 @@ int curves_found(const machined_part_features &f, int first, int last)
 {
     int n = 0;
     for (int k = first; k <= last; ++k)
-        n += f.covered[k] >= 0.98 * machined_part_ridge_length(k);
+        n += machined_part_ridge_found(&f, k);
     return n;
 }
 

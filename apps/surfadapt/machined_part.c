@@ -96,30 +96,22 @@ int machined_part(int resolution, int32_t *nverts_out, double **xyz_out, int32_t
     if (!plane || !xyz || !tris)
         goto fail;
 
-    /* The plane's points: the outline from the point with the smallest angle about the
-     * hole's axis (the outline is convex about it), then the hole's, counter-clockwise. */
-    {
-        double *raw = plane + 2 * nh; /* scratch: the outline as generated */
-        outline(resolution, raw);
-        int first = 0;
-        for (int i = 1; i < no; ++i)
-            if (angle_about_hole(raw + 2 * i) < angle_about_hole(raw + 2 * first))
-                first = i;
-        double *rotated = malloc(sizeof(double) * 2 * (size_t)no);
-        if (!rotated)
-            goto fail;
-        for (int i = 0; i < no; ++i) {
-            rotated[2 * i] = raw[2 * ((first + i) % no)];
-            rotated[2 * i + 1] = raw[2 * ((first + i) % no) + 1];
-        }
-        for (int i = 0; i < 2 * no; ++i)
-            plane[i] = rotated[i];
-        free(rotated);
-        for (int j = 0; j < nh; ++j) {
-            const double t = 2 * PI * j / nh;
-            plane[2 * (no + j)] = hole_x + hole_r * cos(t);
-            plane[2 * (no + j) + 1] = hole_y + hole_r * sin(t);
-        }
+    /* The plane's points: the outline from its point with the smallest angle about the
+     * hole's axis (it is star-shaped about the axis: each angle once), then the hole's,
+     * both counter-clockwise. */
+    outline(resolution, xyz); /* xyz as scratch: it has room for 3 ring points */
+    int first = 0;
+    for (int i = 1; i < no; ++i)
+        if (angle_about_hole(xyz + 2 * i) < angle_about_hole(xyz + 2 * first))
+            first = i;
+    for (int i = 0; i < no; ++i) {
+        plane[2 * i] = xyz[2 * ((first + i) % no)];
+        plane[2 * i + 1] = xyz[2 * ((first + i) % no) + 1];
+    }
+    for (int j = 0; j < nh; ++j) {
+        const double t = 2 * PI * j / nh;
+        plane[2 * (no + j)] = hole_x + hole_r * cos(t);
+        plane[2 * (no + j) + 1] = hole_y + hole_r * sin(t);
     }
     for (int v = 0; v < ring; ++v)
         for (int level = 0; level < 2; ++level) {
@@ -129,37 +121,29 @@ int machined_part(int resolution, int32_t *nverts_out, double **xyz_out, int32_t
             p[2] = level == 0 ? height : 0; /* the top first, then the bottom */
         }
 
-    int32_t *t = tris;
     /* The top: the outline and the hole zipped by their angle about the axis, each step
-     * advancing the loop whose next point comes first. From outline point i and hole point
-     * j, a triangle (i, i + 1, j) or (i, j + 1, j), counter-clockwise seen from +z; the
-     * bottom has the same triangles reversed. The hole starts at the last point not past
-     * the outline's first. */
-    {
-        const double a0 = angle_about_hole(plane);
-        const int j0 = (int)floor(a0 / (2 * PI / nh));
-        int i = 0, j = 0;
-        while (i < no || j < nh) {
-            const double next_o = i < no ? angle_about_hole(plane + 2 * ((i + 1) % no)) + (i + 1 == no ? 2 * PI : 0)
-                                         : INFINITY;
-            /* the outline's angles grow from a0 to a0 + 2 pi; the hole's are unwrapped alike */
-            const double next_o_unwrapped = next_o < a0 ? next_o + 2 * PI : next_o;
-            const double next_h = j < nh ? 2 * PI * (j0 + j + 1) / nh : INFINITY;
-            const int o = i % no, o1 = (i + 1) % no, h = no + (j0 + j) % nh, h1 = no + (j0 + j + 1) % nh;
-            int32_t a, b, c;
-            if (next_o_unwrapped <= next_h) {
-                a = o, b = o1, c = h;
-                ++i;
-            } else {
-                a = o, b = h1, c = h;
-                ++j;
-            }
-            /* Each must turn counter-clockwise: the zip is a triangulation only then. */
-            if (!(cross2(plane + 2 * a, plane + 2 * b, plane + 2 * c) > 0))
-                goto fail;
-            *t++ = a, *t++ = b, *t++ = c;
-            *t++ = ring + a, *t++ = ring + c, *t++ = ring + b;
-        }
+     * advancing the loop whose next point comes first (angles unwrapped: the outline's grow
+     * from a0 to a0 + 2 pi, the hole's from that of its last point not past a0). From
+     * outline point i and hole point j, the triangle (i, i + 1, j) or (i, j + 1, j),
+     * counter-clockwise seen from +z; the bottom has the same triangles reversed. Whatever
+     * the triangles, their signed areas add up to the area within the two loops; so if every
+     * one is counter-clockwise, none overlaps another: the zip is a triangulation. */
+    int32_t *t = tris;
+    const double a0 = angle_about_hole(plane);
+    const int j0 = (int)floor(a0 / (2 * PI / nh));
+    for (int i = 0, j = 0; i < no || j < nh;) {
+        const double next_o = i + 1 < no ? angle_about_hole(plane + 2 * (i + 1)) : i + 1 == no ? a0 + 2 * PI : INFINITY;
+        const double next_h = j < nh ? 2 * PI * (j0 + j + 1) / nh : INFINITY;
+        const int32_t o = i % no, h = no + (j0 + j) % nh;
+        const int32_t b = next_o <= next_h ? (i + 1) % no : no + (j0 + j + 1) % nh;
+        if (next_o <= next_h)
+            ++i;
+        else
+            ++j;
+        if (!(cross2(plane + 2 * o, plane + 2 * b, plane + 2 * h) > 0))
+            goto fail;
+        *t++ = o, *t++ = b, *t++ = h;
+        *t++ = ring + o, *t++ = ring + h, *t++ = ring + b;
     }
     /* The walls, one strip as tall as the part per segment: the outline's facing out, the
      * hole's facing its axis (away from the material). */
@@ -396,9 +380,13 @@ void machined_part_features_of(int32_t nverts, const double *xyz, const int32_t 
         f.on_hole_wall += patch == 1;
         f.on_fillet += patch == 2;
     }
-    /* Chords are shorter than their arcs (by 0.3 % at 24 segments round the hole), so a
-     * curve counts as found when its edges cover 98 % of it. */
     for (int k = 0; k < MACHINED_PART_RIDGES; ++k)
-        f.ridges_found += f.covered[k] >= 0.98 * machined_part_ridge_length(k);
+        f.ridges_found += machined_part_ridge_found(&f, k);
     *found = f;
+}
+
+int machined_part_ridge_found(const machined_part_features *found, int ridge)
+{
+    return ridge >= 0 && ridge < MACHINED_PART_RIDGES &&
+           found->covered[ridge] >= 0.98 * machined_part_ridge_length(ridge);
 }
