@@ -61,7 +61,8 @@ APP_OBJS  := $(APP_CXX:%.cpp=build/%.o) $(APP_C:%.c=build/%.o)
 
 # C tests use only the public header and the shared library; unit tests (C++) may use
 # internals and link the static library. Both are CMocka programs.
-TEST_SUPPORT     := $(sort $(wildcard tests/c/support/*.c)) apps/surfadapt/obj_io.c apps/surfadapt/icosphere.c
+TEST_SUPPORT     := $(sort $(wildcard tests/c/support/*.c)) apps/surfadapt/obj_io.c apps/surfadapt/icosphere.c \
+                    apps/surfadapt/machined_part.c
 TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=build/%.o)
 C_TESTS          := $(patsubst tests/c/%.c,build/tests/%,$(sort $(wildcard tests/c/test_*.c)))
 UNIT_TESTS       := $(patsubst tests/unit/%.cpp,build/tests/%,$(sort $(wildcard tests/unit/unit_*.cpp)))

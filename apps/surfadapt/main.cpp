@@ -2,7 +2,7 @@
 // surfadapt: the command-line tool. A host of the library like any other: it uses only
 // the public C interface.
 //
-//   surfadapt demo              remesh a CAD part, then run the Enright test
+//   surfadapt demo              remesh a machined part, then run the Enright test
 //   surfadapt enright, vortex   the paper's flows with adaptation, as a table and a VTK series
 //   surfadapt remesh IN OUT     remesh an OBJ/OFF mesh at a chosen edge length, write VTK
 //   surfadapt info FILE         validate an OBJ/OFF mesh and print its measures
@@ -21,9 +21,11 @@ const char *const usage =
     "\n"
     "commands:\n"
     "  demo [--mesh FILE] [--out DIR] [--resolution N] [--steps S]\n"
-    "        first remesh FILE (default: fandisk.obj of $SFA_DATA_DIR, else ../shared/data;\n"
-    "        without it a generated box) at half its mean edge length and write\n"
-    "        DIR/remeshed.vtk (DIR defaults to .); then run the Enright test as 'enright'\n"
+    "        first remesh a generated machined part (a block with a drilled hole, a\n"
+    "        chamfer and a fillet; written as generated to DIR/part.vtk) at edge length\n"
+    "        0.08 and print its corners and ridges, expected and as detected before and\n"
+    "        after; or with --mesh, FILE at half its mean edge length. The result goes to\n"
+    "        DIR/remeshed.vtk (DIR defaults to .). Then run the Enright test as 'enright'\n"
     "        does, writing the time series to DIR/enright\n"
     "  enright [--resolution N] [--dt DT] [--steps S] [--adapt-every K] [--isotropic]\n"
     "          [--denoise W] [--no-crossing-guard] [--collision-safe] [--topology-change]\n"

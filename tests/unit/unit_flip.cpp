@@ -198,7 +198,7 @@ void ridge_edges_of_fandisk_are_never_flipped(void **)
 {
     char path[1024];
     if (!data_file("fandisk.obj", path, sizeof path)) {
-        std::printf("%s not found (set SFA_DATA_DIR): skipped\n", path);
+        print_data_skip(path);
         skip();
     }
     sfa_mesh_data data{};

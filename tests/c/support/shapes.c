@@ -532,3 +532,11 @@ int data_file(const char *name, char *buf, size_t len)
     fclose(f);
     return 1;
 }
+
+void print_data_skip(const char *path)
+{
+    printf("skipped: needs %s, one of the paper's models (not part of the project; SFA_DATA_DIR=DIR reads "
+           "them from DIR)\n",
+           path);
+    fflush(stdout);
+}

@@ -152,5 +152,9 @@ int snapshot_equal(const snapshot *a, const snapshot *b, char *why, size_t why_l
 const char *data_dir(void);
 /* Writes data_dir()/name into buf; returns 1 if that file can be opened, else 0. */
 int data_file(const char *name, char *buf, size_t len);
+/* The one line a test prints when it skips because data_file() did not find `path`: what
+ * is missing and why a fresh clone does not have it. scripts/run-tests.sh counts these
+ * lines by their start, "skipped: needs ". */
+void print_data_skip(const char *path);
 
 #endif

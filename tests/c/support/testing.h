@@ -117,12 +117,13 @@ static inline void assert_error_(const sfa_surface *s, int rc, int expected, con
                      t_, a_ - b_);                                                                                     \
     } while (0)
 
-/* Reads a real mesh from the data directory, or skips the test if it is not there. */
+/* Reads a real mesh from the data directory, or skips the test, saying why in one line, if
+ * it is not there. */
 static inline void read_data_or_skip(const char *name, sfa_mesh_data *m)
 {
     char path[1024], err[1024];
     if (!data_file(name, path, sizeof path)) {
-        print_message("%s not found (set SFA_DATA_DIR): skipped\n", path);
+        print_data_skip(path);
         skip();
     }
     if (mesh_read(path, m, err, sizeof err) != 0)
