@@ -59,7 +59,11 @@ APP_OBJS  := $(APP_CXX:%.cpp=build/%.o) $(APP_C:%.c=build/%.o)
 
 # C tests use only the public header and the shared library; unit tests (C++) may use
 # internals and link the static library. Both are CMocka programs.
-TEST_SUPPORT     := $(sort $(wildcard tests/c/support/*.c)) apps/surfadapt/obj_io.c apps/surfadapt/icosphere.c
+# The tool's mesh readers and writers (mesh_formats.h and one file per format family) are
+# shared with the tests, benchmarks and the reader fuzzer.
+MESH_IO          := $(addprefix apps/surfadapt/,obj_io.c format_io.c mesh_formats.c stl_io.c ply_io.c medit_io.c \
+                      vtk_io.c vtu_io.c)
+TEST_SUPPORT     := $(sort $(wildcard tests/c/support/*.c)) $(MESH_IO) apps/surfadapt/icosphere.c
 TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=build/%.o)
 C_TESTS          := $(patsubst tests/c/%.c,build/tests/%,$(sort $(wildcard tests/c/test_*.c)))
 UNIT_TESTS       := $(patsubst tests/unit/%.cpp,build/tests/%,$(sort $(wildcard tests/unit/unit_*.cpp)))
@@ -260,7 +264,7 @@ build/bench/%: bench/%.cpp $(TEST_SUPPORT_OBJ) $(LIB_A)
 	$(CXX) $(CXXFLAGS) -Ibench -Iapps/surfadapt -o $@ $< $(TEST_SUPPORT_OBJ) $(LIB_A) -lm
 # The backtrace needs the flows' velocity fields and the checkpoint header of the tool.
 $(FIDELITY): bench/fidelity.cpp build/apps/surfadapt/flows.o build/apps/surfadapt/checkpoint.o \
-             build/apps/surfadapt/obj_io.o $(LIB_A)
+             build/apps/surfadapt/obj_io.o build/apps/surfadapt/format_io.o $(LIB_A)
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -Iapps/surfadapt -o $@ $^ -lm
 bench: all $(BENCHES) $(FIDELITY)

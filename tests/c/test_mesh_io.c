@@ -111,22 +111,40 @@ static void obj_polygons_are_fanned(void **state)
 static void obj_bad_indices_passed_on(void **state)
 {
     (void)state;
-    /* Out of range, zero and repeated indices are for the library to judge. */
+    /* Out of range and repeated indices are for the library to judge ... */
     const char *text = "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
                        "f 1 2 99\n"
-                       "f 0 1 1\n"
-                       "f -7 1 2\n";
+                       "f 3 1 1\n";
     sfa_mesh_data m;
     char err[256];
     assert_int_equal(read_text(text, ".obj", &m, err, sizeof err), 0);
-    const int32_t tris[9] = {0, 1, 98, -1, 0, 0, -4, 0, 1};
-    assert_triangles(&m, tris, 3);
-    /* ... and the library names the first problem. */
+    const int32_t tris[6] = {0, 1, 98, 2, 0, 0};
+    assert_triangles(&m, tris, 2);
+    /* ... and the library names the first problem, in OBJ's numbers when given them. */
     sfa_surface *s = NULL;
     assert_int_equal(sfa_create(&s), SFA_OK);
     assert_error(s, sfa_set_mesh(s, m.nverts, m.xyz, m.ntris, m.tris, 0), SFA_ERR_MESH, "triangle 0", "vertex 98");
+    for (int i = 0; i < 3 * m.ntris; ++i)
+        ++m.tris[i];
+    assert_error(s, sfa_set_mesh(s, m.nverts, m.xyz, m.ntris, m.tris, 1), SFA_ERR_MESH, "triangle 1", "vertex 99");
     sfa_destroy(s);
     mesh_free(&m);
+}
+
+/* Indices that name no vertex in OBJ's own numbering cannot be passed on in it: an error
+ * naming the line. */
+static void obj_index_zero_and_before_the_first(void **state)
+{
+    (void)state;
+    sfa_mesh_data m;
+    char err[256];
+    assert_int_equal(read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", ".obj", &m, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":4: index 0: OBJ indices start at 1"));
+    assert_null(m.tris);
+    assert_int_equal(read_text("v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf -7 1 2\n", ".obj", &m, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":5: relative index -7"));
+    assert_int_equal(read_text("v 0 0 0\nf 1 1 2147483648\n", ".obj", &m, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":2:"));
 }
 
 static void obj_errors(void **state)
@@ -213,6 +231,7 @@ int main(void)
         cmocka_unit_test(obj_corner_forms_and_negative_indices),
         cmocka_unit_test(obj_polygons_are_fanned),
         cmocka_unit_test(obj_bad_indices_passed_on),
+        cmocka_unit_test(obj_index_zero_and_before_the_first),
         cmocka_unit_test(obj_errors),
         cmocka_unit_test(obj_empty_file),
         cmocka_unit_test(off_files),
