@@ -54,15 +54,15 @@ static size_t type_size(ply_type t)
 
 static int is_integer(ply_type t) { return t != T_F32 && t != T_F64 && t != T_NONE; }
 
-/* The rest of the header line after its keyword, as whitespace-separated words. */
+/* The words of a header line (up to its newline), separated by blanks. */
 static int header_words(const char *line, char words[][32], int max)
 {
     int n = 0;
-    while (*line && n < max) {
+    while (*line && *line != '\n' && n < max) {
         while (*line == ' ' || *line == '\t' || *line == '\r')
             ++line;
         size_t len = 0;
-        while (line[len] && line[len] != ' ' && line[len] != '\t' && line[len] != '\r')
+        while (line[len] && line[len] != ' ' && line[len] != '\t' && line[len] != '\r' && line[len] != '\n')
             ++len;
         if (len == 0)
             break;
@@ -76,17 +76,16 @@ static int header_words(const char *line, char words[][32], int max)
 }
 
 /* Parses the header; returns the offset of the body, or 0 after read_fail. */
-static size_t read_header(char *data, size_t size, ply_header *h, read_context *c)
+static size_t read_header(const char *data, size_t size, ply_header *h, read_context *c)
 {
-    char *line = data;
+    const char *line = data;
     c->line = 0;
     for (;;) {
         if ((size_t)(line - data) >= size)
             return read_fail(c, "the header has no end_header line"), 0;
-        char *next = memchr(line, '\n', size - (size_t)(line - data));
+        const char *next = memchr(line, '\n', size - (size_t)(line - data));
         if (!next)
             return read_fail(c, "the header has no end_header line"), 0;
-        *next = '\0';
         ++c->line;
         char w[6][32];
         const int n = header_words(line, w, 6);
