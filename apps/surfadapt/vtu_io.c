@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* VTK XML UnstructuredGrid (.vtu) of one Piece: the Points array and the Cells arrays
- * connectivity, offsets and types, each inline ASCII or appended raw binary (header_type
- * UInt32 or UInt64, either byte order). Triangles (cell type 5) make the mesh, polygons
- * (7) and quads (9) are fan-triangulated, vertices and lines (1 to 4) are read past, any
- * other cell is an error; point and cell data are not read. Inline base64 and compressed
- * data are not read (an error says so): the tool never writes them. Only the tags that
+ * connectivity, offsets and types, each inline ASCII, inline base64 binary (meshio's and
+ * ParaView's default) or appended raw binary (header_type UInt32 or UInt64, either byte
+ * order). Triangles (cell type 5) make the mesh, polygons (7) and quads (9) are
+ * fan-triangulated, vertices and lines (1 to 4) are read past, any other cell is an
+ * error; point and cell data are not read. Compressed data and base64 appended data are
+ * not read (an error says so): the tool never writes them. Only the tags that
  * matter are looked for, not a general XML parse: the files are machine-written. */
 #include "format_io.h"
 
@@ -90,6 +91,93 @@ typedef struct {
     long long *integer;
 } vtu_array;
 
+/* Room for `count` reals or integers in *out. */
+static int out_alloc(vtu_array *out, long long count, int reals)
+{
+    out->count = count;
+    void *values = malloc((reals ? sizeof(double) : sizeof(long long)) * (size_t)(count > 0 ? count : 1));
+    if (reals)
+        out->real = values;
+    else
+        out->integer = values;
+    return values != NULL;
+}
+
+/* `count` values of type t from binary data (enough of it checked) into *out. */
+static int binary_values(const vtu_file *f, const unsigned char *bytes, vtu_type type, long long count, int reals,
+                         vtu_array *out)
+{
+    if (!out_alloc(out, count, reals))
+        return read_fail(f->c, "out of memory");
+    const size_t size = type_size(type);
+    for (long long i = 0; i < count; ++i) {
+        const unsigned char *p = bytes + (size_t)i * size;
+        double r = 0;
+        long long n = 0;
+        switch (type) {
+        case V_I8: n = (signed char)p[0]; break;
+        case V_U8: n = p[0]; break;
+        case V_I16: n = (int16_t)(uint16_t)(f->big_endian ? (p[0] << 8 | p[1]) : (p[1] << 8 | p[0])); break;
+        case V_U16: n = f->big_endian ? (p[0] << 8 | p[1]) : (p[1] << 8 | p[0]); break;
+        case V_I32: n = (int32_t)load_u32(p, f->big_endian); break;
+        case V_U32: n = load_u32(p, f->big_endian); break;
+        case V_I64: n = (long long)load_u64(p, f->big_endian); break;
+        case V_U64: {
+            const uint64_t u = load_u64(p, f->big_endian);
+            n = u > INT64_MAX ? -1 : (long long)u; /* out of range either way */
+            break;
+        }
+        case V_F32: r = load_f32(p, f->big_endian); break;
+        case V_F64: r = load_f64(p, f->big_endian); break;
+        case V_NONE: break;
+        }
+        if (reals)
+            out->real[i] = type == V_F32 || type == V_F64 ? r : (double)n;
+        else
+            out->integer[i] = n;
+    }
+    return 0;
+}
+
+/* Base64 up to the next '<' (white space skipped). Each group of four characters is
+ * decoded on its own, so that streams padded with '=' and put one after the other (VTK
+ * encodes the header and the data apart) decode as one. NULL if out of memory. */
+static unsigned char *base64_decode(const char *text, uint64_t *len)
+{
+    const char *end = strchr(text, '<');
+    const size_t n = end ? (size_t)(end - text) : strlen(text);
+    unsigned char *out = malloc(n / 4 * 3 + 3);
+    if (!out)
+        return NULL;
+    uint64_t used = 0;
+    unsigned group = 0, chars = 0, pad = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const char ch = text[i];
+        int v;
+        if (ch >= 'A' && ch <= 'Z')
+            v = ch - 'A';
+        else if (ch >= 'a' && ch <= 'z')
+            v = ch - 'a' + 26;
+        else if (ch >= '0' && ch <= '9')
+            v = ch - '0' + 52;
+        else if (ch == '+' || ch == '/')
+            v = ch == '+' ? 62 : 63;
+        else if (ch == '=')
+            v = 0, ++pad;
+        else
+            continue; /* white space (and anything else) between groups */
+        group = group << 6 | (unsigned)v;
+        if (++chars == 4) {
+            const unsigned bytes = pad < 3 ? 3 - pad : 0;
+            for (unsigned k = 0; k < bytes; ++k)
+                out[used++] = (unsigned char)(group >> (16 - 8 * k));
+            group = chars = pad = 0;
+        }
+    }
+    *len = used;
+    return out;
+}
+
 /* Reads the `count` values of the DataArray at `tag` as reals or integers. */
 static int read_array(const vtu_file *f, const char *tag, const char *name, long long count, int reals,
                       vtu_array *out)
@@ -106,27 +194,45 @@ static int read_array(const vtu_file *f, const char *tag, const char *name, long
     char format[16] = "ascii";
     attribute(tag, "format", format, sizeof format);
     const size_t size = type_size(type);
-    const unsigned char *bytes = NULL;
     const char *text = NULL;
+    unsigned char *decoded = NULL; /* inline base64, decoded */
+    const unsigned char *block = NULL;
+    uint64_t avail = 0;
     if (strcmp(format, "appended") == 0) {
         char *end;
         if (!f->raw || attribute(tag, "offset", value, sizeof value) != 0)
             return read_fail(f->c, "DataArray %s: appended, but no raw AppendedData or no offset", name);
         const unsigned long long offset = strtoull(value, &end, 10);
-        const size_t header = f->header64 ? 8 : 4;
-        if (*end || value[0] == '-' || offset > f->raw_size || f->raw_size - offset < header)
+        if (*end || value[0] == '-' || offset > f->raw_size)
             return read_fail(f->c, "DataArray %s: offset %s outside the appended data", name, value);
-        const unsigned char *block = (const unsigned char *)f->raw + offset;
-        const uint64_t nbytes = f->header64 ? load_u64(block, f->big_endian) : load_u32(block, f->big_endian);
+        block = (const unsigned char *)f->raw + offset;
+        avail = f->raw_size - offset;
         f->c->line = 0;
         f->c->offset = (long long)(f->raw - f->data) + (long long)offset;
-        if (nbytes > f->raw_size - offset - header)
-            return read_fail(f->c, "DataArray %s: %llu bytes, more than the file holds", name,
-                             (unsigned long long)nbytes);
-        if ((uint64_t)count > nbytes / size)
-            return read_fail(f->c, "DataArray %s: %llu bytes hold fewer than %lld values", name,
-                             (unsigned long long)nbytes, count);
-        bytes = block + header;
+    } else if (strcmp(format, "binary") == 0) {
+        const char *close = strchr(tag, '>');
+        if (!close || close[-1] == '/')
+            return read_fail(f->c, "DataArray %s: no values", name);
+        decoded = base64_decode(close + 1, &avail);
+        if (!decoded)
+            return read_fail(f->c, "DataArray %s: out of memory", name);
+        block = decoded;
+    }
+    if (block) {
+        const size_t header = f->header64 ? 8 : 4;
+        const uint64_t nbytes = avail < header ? 0
+                                : f->header64 ? load_u64(block, f->big_endian)
+                                              : load_u32(block, f->big_endian);
+        int rc = 0;
+        if (avail < header || nbytes > avail - header)
+            rc = read_fail(f->c, "DataArray %s: %llu bytes, more than the file holds", name, (unsigned long long)nbytes);
+        else if ((uint64_t)count > nbytes / size)
+            rc = read_fail(f->c, "DataArray %s: %llu bytes hold fewer than %lld values", name,
+                           (unsigned long long)nbytes, count);
+        else
+            rc = binary_values(f, block + header, type, count, reals, out);
+        free(decoded);
+        return rc;
     } else if (strcmp(format, "ascii") == 0) {
         const char *close = strchr(tag, '>');
         if (!close || close[-1] == '/')
@@ -138,50 +244,13 @@ static int read_array(const vtu_file *f, const char *tag, const char *name, long
         if (count > chars / 2 + 1)
             return read_fail(f->c, "DataArray %s: %lld values cannot fit in its text", name, count);
     } else
-        return read_fail(f->c, "DataArray %s: format '%s' is not read (only ascii and raw appended)", name, format);
-    out->count = count;
-    void *values = malloc((reals ? sizeof(double) : sizeof(long long)) * (size_t)(count > 0 ? count : 1));
-    if (!values)
+        return read_fail(f->c, "DataArray %s: format '%s' is not read (only ascii, binary and raw appended)", name, format);
+    if (!out_alloc(out, count, reals))
         return read_fail(f->c, "out of memory");
-    if (reals)
-        out->real = values;
-    else
-        out->integer = values;
+    /* The tag's line is counted on from here as the values are read. */
     for (long long i = 0; i < count; ++i) {
-        double r = 0;
-        long long n = 0;
-        if (bytes) {
-            const unsigned char *p = bytes + (size_t)i * size;
-            switch (type) {
-            case V_I8: n = (signed char)p[0]; break;
-            case V_U8: n = p[0]; break;
-            case V_I16: n = (int16_t)(uint16_t)(f->big_endian ? (p[0] << 8 | p[1]) : (p[1] << 8 | p[0])); break;
-            case V_U16: n = f->big_endian ? (p[0] << 8 | p[1]) : (p[1] << 8 | p[0]); break;
-            case V_I32: n = (int32_t)load_u32(p, f->big_endian); break;
-            case V_U32: n = load_u32(p, f->big_endian); break;
-            case V_I64: n = (long long)load_u64(p, f->big_endian); break;
-            case V_U64: {
-                const uint64_t u = load_u64(p, f->big_endian);
-                n = u > INT64_MAX ? -1 : (long long)u; /* out of range either way */
-                break;
-            }
-            case V_F32: r = load_f32(p, f->big_endian); break;
-            case V_F64: r = load_f64(p, f->big_endian); break;
-            case V_NONE: break;
-            }
-            if (type != V_F32 && type != V_F64)
-                r = (double)n;
-        } else {
-            /* The tag's line is counted on from here as the values are read. */
-            if (!reals && text_long(&text, f->c, 0, &n) != 0)
-                return read_fail(f->c, "DataArray %s: value %lld is no integer", name, i);
-            if (reals && text_double(&text, f->c, 0, &r) != 0)
-                return read_fail(f->c, "DataArray %s: value %lld is no number", name, i);
-        }
-        if (reals)
-            out->real[i] = r;
-        else
-            out->integer[i] = n;
+        if (reals ? text_double(&text, f->c, 0, &out->real[i]) != 0 : text_long(&text, f->c, 0, &out->integer[i]) != 0)
+            return read_fail(f->c, "DataArray %s: value %lld is no %s", name, i, reals ? "number" : "integer");
     }
     return 0;
 }
