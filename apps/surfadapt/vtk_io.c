@@ -60,7 +60,7 @@ static int classic_cells(const char **p, read_context *c, const char *section, l
                 rc = read_fail(c, "%s cell %lld: expected %lld vertex indices", section, cell, n);
         if (rc == 0)
             rc = add_cell(section, cell, v, n, b, c);
-        used += n + 1;
+        used += rc == 0 ? n + 1 : 0; /* n is not checked after a failure */
     }
     free(v);
     return rc;
