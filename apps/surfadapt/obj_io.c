@@ -57,7 +57,7 @@ static int obj_corner(const char **p, int64_t nverts, int64_t face, int32_t *ind
         ++*p; /* the texture and normal indices are not needed */
     if (a == 0)
         return read_fail(c, "index 0: OBJ indices start at 1");
-    if (a < 0 && -a > nverts)
+    if (a < -nverts)
         return read_fail(c, "relative index %lld: only %lld vertices come before it", a, (long long)nverts);
     /* 1-based, the index must stay an int32_t: the tool passes the file's own numbers. */
     if (a > INT32_MAX)
