@@ -61,7 +61,11 @@ APP_OBJS  := $(APP_CXX:%.cpp=build/%.o) $(APP_C:%.c=build/%.o)
 
 # C tests use only the public header and the shared library; unit tests (C++) may use
 # internals and link the static library. Both are CMocka programs.
-TEST_SUPPORT     := $(sort $(wildcard tests/c/support/*.c)) apps/surfadapt/obj_io.c apps/surfadapt/icosphere.c \
+# The tool's mesh readers and writers (mesh_formats.h and one file per format family) are
+# shared with the tests, benchmarks and the reader fuzzer.
+MESH_IO          := $(addprefix apps/surfadapt/,obj_io.c format_io.c mesh_formats.c stl_io.c ply_io.c medit_io.c \
+                      vtk_io.c vtu_io.c)
+TEST_SUPPORT     := $(sort $(wildcard tests/c/support/*.c)) $(MESH_IO) apps/surfadapt/icosphere.c \
                     apps/surfadapt/machined_part.c
 TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=build/%.o)
 C_TESTS          := $(patsubst tests/c/%.c,build/tests/%,$(sort $(wildcard tests/c/test_*.c)))
@@ -213,6 +217,7 @@ check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE
 	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) "$(FORTRAN_EXAMPLE) 60" $(C_EXAMPLE) \
 	  tests/python/run.sh "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" \
 	  tests/install/test_install.sh tests/cli/test_features_cli.sh tests/cli/test_remesh_cli.sh tests/cli/test_flows_cli.sh \
+	  tests/cli/test_formats_cli.sh \
 	  tests/cli/test_fidelity.sh tests/readme/test_readme_programs.sh $(SAN_TESTS) $(SAN_UNIT_TESTS) \
 	  $(foreach f,$(FUZZERS),"build/san/tests/replay_$(f) tests/fuzz/corpus/$(f) tests/fuzz/crashes/$(f)")
 
@@ -268,7 +273,7 @@ build/bench/%: bench/%.cpp $(TEST_SUPPORT_OBJ) $(LIB_A)
 	$(CXX) $(CXXFLAGS) -Ibench -Iapps/surfadapt -o $@ $< $(TEST_SUPPORT_OBJ) $(LIB_A) -lm
 # The backtrace needs the flows' velocity fields and the checkpoint header of the tool.
 $(FIDELITY): bench/fidelity.cpp build/apps/surfadapt/flows.o build/apps/surfadapt/checkpoint.o \
-             build/apps/surfadapt/obj_io.o $(LIB_A)
+             build/apps/surfadapt/obj_io.o build/apps/surfadapt/format_io.o $(LIB_A)
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -Iapps/surfadapt -o $@ $^ -lm
 bench: all $(BENCHES) $(FIDELITY)

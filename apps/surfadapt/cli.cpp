@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "cli.hpp"
 
-#include "obj_io.h"
+#include "mesh_formats.h"
 #include "vtk_writer.h"
 
 #include <cmath>
@@ -36,15 +36,21 @@ sfa_surface *surface_from_file(const char *path, bool drop_unreferenced)
 {
     sfa_mesh_data mesh{};
     char error[512];
-    if (mesh_read(path, &mesh, error, sizeof error) != 0) {
+    int base = 0;
+    if (mesh_file_read(path, &mesh, &base, error, sizeof error) != 0) {
         std::fprintf(stderr, "surfadapt: %s\n", error);
         return nullptr;
     }
+    // The library names bad vertices and triangles in the numbering it is given: the file's
+    // own (OBJ and Medit count from 1), so that a message's numbers are the file's. The
+    // readers keep every index within int32_t in that base.
+    for (int64_t i = 0; i < 3 * static_cast<int64_t>(mesh.ntris); ++i)
+        mesh.tris[i] += base;
     sfa_surface *s = nullptr;
     int rc = sfa_create(&s);
     if (rc == SFA_OK) {
         sfa_set_param(s, SFA_PARAM_DROP_UNREFERENCED, drop_unreferenced ? 1 : 0);
-        rc = sfa_set_mesh(s, mesh.nverts, mesh.xyz, mesh.ntris, mesh.tris, 0);
+        rc = sfa_set_mesh(s, mesh.nverts, mesh.xyz, mesh.ntris, mesh.tris, base);
         if (rc != SFA_OK) {
             fail(s, path);
             s = nullptr;
@@ -52,6 +58,15 @@ sfa_surface *surface_from_file(const char *path, bool drop_unreferenced)
     }
     mesh_free(&mesh);
     return s;
+}
+
+bool known_output_format(const char *path)
+{
+    if (mesh_format_of(path) != MESH_FORMAT_UNKNOWN)
+        return true;
+    std::fprintf(stderr, "surfadapt: %s: unknown mesh format: the extension must be one of %s\n", path,
+                 mesh_format_extensions());
+    return false;
 }
 
 bool read_drop_option(int argc, char **argv, int first, const char *command, bool &drop)
@@ -193,3 +208,24 @@ bool write_surface_vtk(const sfa_surface *s, const char *path, const std::string
     return write_vtk_features(path, title.substr(0, 255).c_str(), vtk, error);
 }
 
+bool write_surface(const sfa_surface *s, const char *path, const std::string &title, std::string &error)
+{
+    if (mesh_format_of(path) == MESH_FORMAT_VTK)
+        return write_surface_vtk(s, path, title, error);
+    int32_t nverts = 0, ntris = 0;
+    sfa_get_counts(s, &nverts, &ntris);
+    std::vector<double> xyz(3 * static_cast<size_t>(nverts));
+    std::vector<int32_t> tris(3 * static_cast<size_t>(ntris)), rank(static_cast<size_t>(nverts));
+    if (sfa_get_mesh(s, nverts, xyz.data(), ntris, tris.data(), 0) != SFA_OK ||
+        sfa_get_feature_ranks(s, nverts, rank.data()) != SFA_OK) {
+        error = sfa_last_error(s);
+        return false;
+    }
+    const sfa_mesh_data mesh{nverts, ntris, xyz.data(), tris.data()};
+    char message[512];
+    if (mesh_file_write(path, &mesh, title.c_str(), rank.data(), message, sizeof message) != 0) {
+        error = message;
+        return false;
+    }
+    return true;
+}

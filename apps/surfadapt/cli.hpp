@@ -19,8 +19,13 @@ bool ensure_directory(const std::string &path);
 // sfa_measure, NaN if it fails.
 double measure(const sfa_surface *s, int quantity);
 
-// Reads an OBJ/OFF file into a new surface; prints why and returns nullptr on failure.
+// Reads a mesh file (format by extension, mesh_formats.h) into a new surface, in the file's
+// own numbering so that the library's messages name the file's vertex and triangle
+// numbers; prints why and returns nullptr on failure.
 sfa_surface *surface_from_file(const char *path, bool drop_unreferenced);
+
+// Whether `path` has an extension the tool writes; prints the supported ones if not.
+bool known_output_format(const char *path);
 
 // The options after the file names of `info` and `features`: only --drop-unreferenced.
 // Prints the usage and returns false on anything else.
@@ -42,3 +47,8 @@ Quality quality_of(const sfa_surface *s);
 // The surface, its ridge edges and per-vertex analysis as legacy VTK (vtk_writer.h).
 // Returns false with the reason in `error`.
 bool write_surface_vtk(const sfa_surface *s, const char *path, const std::string &title, std::string &error);
+
+// Writes the surface in the format of the path's extension: .vtk with its features as
+// write_surface_vtk does, .vtu with the feature rank as point data, the others the mesh
+// alone. Returns false with the reason in `error`.
+bool write_surface(const sfa_surface *s, const char *path, const std::string &title, std::string &error);

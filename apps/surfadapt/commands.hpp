@@ -6,6 +6,7 @@
 int demo_command(int argc, char **argv);
 int info_command(int argc, char **argv);
 int features_command(int argc, char **argv);
+int convert_command(int argc, char **argv);
 int remesh_command(int argc, char **argv);
 int enright_command(int argc, char **argv);
 int vortex_command(int argc, char **argv);

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// surfadapt info and surfadapt features: what the library sees in a mesh.
+// surfadapt info, features and convert: what the library sees in a mesh, and mesh files
+// from one format to another.
 #include "cli.hpp"
 #include "commands.hpp"
 #include "component_report.hpp"
+#include "mesh_formats.h"
 
 #include <cstdio>
 #include <string>
@@ -36,18 +38,20 @@ int info_command(int argc, char **argv)
 int features_command(int argc, char **argv)
 {
     if (argc < 4) {
-        std::fprintf(stderr, "surfadapt features: needs an input mesh and an output .vtk file\n%s", usage);
+        std::fprintf(stderr, "surfadapt features: needs an input and an output mesh file\n%s", usage);
         return 2;
     }
     bool drop = false;
     if (!read_drop_option(argc, argv, 4, "features", drop))
         return 2;
     const char *in = argv[2], *out = argv[3];
+    if (!known_output_format(out))
+        return 2;
     sfa_surface *s = surface_from_file(in, drop);
     if (!s)
         return 1;
     std::string error;
-    if (!write_surface_vtk(s, out, std::string("surfadapt features of ") + in, error)) {
+    if (!write_surface(s, out, std::string("surfadapt features of ") + in, error)) {
         std::fprintf(stderr, "surfadapt: %s\n", error.c_str());
         sfa_destroy(s);
         return 1;
@@ -65,4 +69,31 @@ int features_command(int argc, char **argv)
     std::printf("%s: %d vertices, %d triangles: %d smooth, %d ridge, %d corner vertices, %d ridge edges -> %s\n", in,
                 nverts, ntris, count[0], count[1], count[2], nlines, out);
     return 0;
+}
+
+// A file's mesh as it is in another format, without the library: a mesh the library
+// refuses can still be converted (and then looked at).
+int convert_command(int argc, char **argv)
+{
+    if (argc != 4) {
+        std::fprintf(stderr, "surfadapt convert: needs an input and an output mesh file\n%s", usage);
+        return 2;
+    }
+    const char *in = argv[2], *out = argv[3];
+    if (!known_output_format(out))
+        return 2;
+    sfa_mesh_data mesh{};
+    char error[512];
+    if (mesh_file_read(in, &mesh, nullptr, error, sizeof error) != 0) {
+        std::fprintf(stderr, "surfadapt: %s\n", error);
+        return 1;
+    }
+    const int rc = mesh_file_write(out, &mesh, (std::string("surfadapt convert of ") + in).c_str(), nullptr, error,
+                                   sizeof error);
+    if (rc != 0)
+        std::fprintf(stderr, "surfadapt: %s\n", error);
+    else
+        std::printf("%s: %d vertices, %d triangles -> %s\n", in, mesh.nverts, mesh.ntris, out);
+    mesh_free(&mesh);
+    return rc != 0;
 }

@@ -4,9 +4,10 @@
 //
 //   surfadapt demo              remesh a machined part, then run the Enright test
 //   surfadapt enright, vortex   the paper's flows with adaptation, as a table and a VTK series
-//   surfadapt remesh IN OUT     remesh an OBJ/OFF mesh at a chosen edge length, write VTK
-//   surfadapt info FILE         validate an OBJ/OFF mesh and print its measures
-//   surfadapt features IN OUT   write the detected features of a mesh as VTK for ParaView
+//   surfadapt remesh IN OUT     remesh a mesh at a chosen edge length, write it
+//   surfadapt info FILE         validate a mesh and print its measures
+//   surfadapt features IN OUT   write the detected features of a mesh, e.g. as VTK for ParaView
+//   surfadapt convert IN OUT    a mesh file in another format
 #include "cli.hpp"
 #include "commands.hpp"
 
@@ -54,17 +55,27 @@ const char *const usage =
     "        the vortex flow (paper §5.2.1, §5.2.3): a sphere of radius 0.15 at\n"
     "        (0.5, 0.75, 0.5); period 2 with DT 0.01 from N = 33 (10,892 vertices), period 6\n"
     "        with DT 0.015 from N = 48\n"
-    "  remesh IN OUT.vtk [--edge-length L] [--isotropic] [--drop-unreferenced]\n"
-    "        adapt an OBJ or OFF mesh to edge length L (default: its mean edge length),\n"
+    "  remesh IN OUT [--edge-length L] [--isotropic] [--drop-unreferenced]\n"
+    "        adapt mesh IN to edge length L (default: its mean edge length),\n"
     "        anisotropically unless --isotropic, print a quality summary and write the\n"
-    "        result as legacy VTK with its features (as for 'features')\n"
+    "        result to OUT: as .vtk with its features (as for 'features'), as .vtu with\n"
+    "        the feature rank as point data, in the other formats the mesh alone\n"
     "  info FILE [--drop-unreferenced]\n"
-    "        read an OBJ or OFF mesh, validate it and print its measures\n"
-    "  features IN OUT.vtk [--drop-unreferenced]\n"
-    "        read an OBJ or OFF mesh, detect its ridges and corners and write a legacy\n"
-    "        VTK file for ParaView: triangles (POLYGONS) and ridge edges (LINES) with\n"
-    "        cell data 'ridge', point data 'rank' (0 smooth, 1 ridge, 2 corner),\n"
-    "        'aspect_ratio', 'long_direction' and 'normal' of the anisotropic metric\n"
+    "        read a mesh, validate it and print its measures\n"
+    "  features IN OUT [--drop-unreferenced]\n"
+    "        read a mesh, detect its ridges and corners and write them: to OUT.vtk a\n"
+    "        legacy VTK file for ParaView, triangles (POLYGONS) and ridge edges (LINES)\n"
+    "        with cell data 'ridge', point data 'rank' (0 smooth, 1 ridge, 2 corner),\n"
+    "        'aspect_ratio', 'long_direction' and 'normal' of the anisotropic metric;\n"
+    "        to OUT.vtu the mesh with point data 'rank'\n"
+    "  convert IN OUT\n"
+    "        write mesh IN in the format of OUT, as it is (not validated)\n"
+    "  Mesh files (IN, OUT, FILE) are chosen by extension, in any case: .obj (Wavefront),\n"
+    "        .off, .stl (ASCII or binary; written binary, float32), .ply (ASCII or\n"
+    "        binary; written binary), .mesh (Medit/MMG; quadrilaterals read as two\n"
+    "        triangles), .vtk (legacy ASCII POLYDATA), .vtu (VTK XML; written binary\n"
+    "        appended). Messages number vertices as the file does (from 1 in OBJ and\n"
+    "        Medit files, from 0 in the others)\n"
     "  --help, or --help after any command\n"
     "        this text\n"
     "  --version\n"
@@ -117,6 +128,8 @@ int main(int argc, char **argv)
         return info_command(argc, argv);
     if (command == "features")
         return features_command(argc, argv);
+    if (command == "convert")
+        return convert_command(argc, argv);
     std::fprintf(stderr, "surfadapt: unknown command '%s'\n%s", argv[1], usage);
     return 2;
 }

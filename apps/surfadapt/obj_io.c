@@ -1,119 +1,14 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 #include "obj_io.h"
 
+#include "format_io.h"
+
 #include <ctype.h>
 #include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* Growing arrays for what is read; counts stay within int32_t because the library's
- * counts are int32_t. */
-typedef struct {
-    double *xyz;
-    int32_t *tris;
-    int64_t nverts, ntris, vcap, tcap;
-} builder;
-
-typedef struct {
-    const char *path;
-    char *err;
-    size_t err_len;
-    long line;
-} context;
-
-static int fail(const context *c, const char *fmt, ...)
-{
-    if (c->err && c->err_len) {
-        int n = snprintf(c->err, c->err_len, "%s:%ld: ", c->path, c->line);
-        if (n < 0)
-            n = 0;
-        if ((size_t)n < c->err_len) {
-            va_list ap;
-            va_start(ap, fmt);
-            vsnprintf(c->err + n, c->err_len - (size_t)n, fmt, ap);
-            va_end(ap);
-        }
-    }
-    return -1;
-}
-
-static int add_vertex(builder *b, const double p[3])
-{
-    if (b->nverts >= INT32_MAX)
-        return -1;
-    if (b->nverts == b->vcap) {
-        const int64_t cap = b->vcap ? 2 * b->vcap : 1024;
-        double *grown = realloc(b->xyz, sizeof(double) * 3 * (size_t)cap);
-        if (!grown)
-            return -1;
-        b->xyz = grown;
-        b->vcap = cap;
-    }
-    memcpy(b->xyz + 3 * b->nverts, p, sizeof(double) * 3);
-    ++b->nverts;
-    return 0;
-}
-
-static int add_triangle(builder *b, int32_t i, int32_t j, int32_t k)
-{
-    if (b->ntris >= INT32_MAX)
-        return -1;
-    if (b->ntris == b->tcap) {
-        const int64_t cap = b->tcap ? 2 * b->tcap : 2048;
-        int32_t *grown = realloc(b->tris, sizeof(int32_t) * 3 * (size_t)cap);
-        if (!grown)
-            return -1;
-        b->tris = grown;
-        b->tcap = cap;
-    }
-    int32_t *t = b->tris + 3 * b->ntris;
-    t[0] = i;
-    t[1] = j;
-    t[2] = k;
-    ++b->ntris;
-    return 0;
-}
-
-/* Whole file in memory, NUL-terminated: lines are then parsed in place without a
- * line-length limit. */
-static char *slurp(const char *path, const context *c)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        fail(c, "cannot open: %s", strerror(errno));
-        return NULL;
-    }
-    size_t cap = 1 << 16, len = 0;
-    char *buf = malloc(cap);
-    while (buf) {
-        if (len + 1 >= cap) {
-            char *grown = realloc(buf, cap * 2);
-            if (!grown) {
-                free(buf);
-                buf = NULL;
-                break;
-            }
-            buf = grown;
-            cap *= 2;
-        }
-        const size_t got = fread(buf + len, 1, cap - 1 - len, f);
-        len += got;
-        if (got == 0)
-            break;
-    }
-    if (!buf)
-        fail(c, "out of memory");
-    else if (ferror(f)) {
-        fail(c, "read error");
-        free(buf);
-        buf = NULL;
-    } else
-        buf[len] = '\0';
-    fclose(f);
-    return buf;
-}
 
 static const char *skip_blanks(const char *p)
 {
@@ -149,22 +44,29 @@ static int parse_long(const char **p, long long *v)
 }
 
 /* One OBJ face corner `a`, `a/t`, `a//n` or `a/t/n`: the position index, made 0-based
- * (negative indices count back from the last vertex read so far). */
-static int obj_corner(const char **p, int64_t nverts, int32_t *index)
+ * (negative indices count back from the last vertex read so far). An index that names no
+ * vertex in OBJ's own numbering (0, or a relative one before the first vertex) is an
+ * error here: passed on, the library could only name it in another numbering. A positive
+ * index past the last vertex is passed on, for the library to name as the file does. */
+static int obj_corner(const char **p, int64_t nverts, int64_t face, int32_t *index, read_context *c)
 {
     long long a;
     if (parse_long(p, &a) != 0)
-        return -1;
+        return read_fail(c, "face %lld: bad vertex index", (long long)face);
     while (**p && !isspace((unsigned char)**p))
         ++*p; /* the texture and normal indices are not needed */
-    const long long zero_based = a < 0 ? (long long)nverts + a : a - 1;
-    if (zero_based < INT32_MIN || zero_based > INT32_MAX)
-        return -1;
-    *index = (int32_t)zero_based;
+    if (a == 0)
+        return read_fail(c, "index 0: OBJ indices start at 1");
+    if (a < -nverts)
+        return read_fail(c, "relative index %lld: only %lld vertices come before it", a, (long long)nverts);
+    /* 1-based, the index must stay an int32_t: the tool passes the file's own numbers. */
+    if (a > INT32_MAX)
+        return read_fail(c, "index %lld: too large", a);
+    *index = (int32_t)(a < 0 ? nverts + a : a - 1);
     return 0;
 }
 
-static int read_obj(char *text, builder *b, context *c)
+int obj_parse_text(char *text, mesh_builder *b, read_context *c)
 {
     char *line = text;
     while (line) {
@@ -178,28 +80,28 @@ static int read_obj(char *text, builder *b, context *c)
             ++p;
             for (int k = 0; k < 3; ++k)
                 if (parse_double(&p, &v[k]) != 0)
-                    return fail(c, "vertex %lld: expected three coordinates", (long long)b->nverts + 1);
-            if (add_vertex(b, v) != 0)
-                return fail(c, "too many vertices or out of memory");
+                    return read_fail(c, "vertex %lld: expected three coordinates", (long long)b->nverts + 1);
+            if (builder_add_vertex(b, v) != 0)
+                return read_fail(c, "too many vertices or out of memory");
         } else if (p[0] == 'f' && (p[1] == ' ' || p[1] == '\t')) {
-            int32_t first = 0, prev = 0, cur;
+            int32_t first = 0, prev = 0, cur = 0;
             int corners = 0;
             ++p;
             for (;;) {
                 p = skip_blanks(p);
                 if (*p == '\0' || *p == '#')
                     break;
-                if (obj_corner(&p, b->nverts, &cur) != 0)
-                    return fail(c, "face %lld: bad vertex index", (long long)b->ntris + 1);
+                if (obj_corner(&p, b->nverts, b->ntris + 1, &cur, c) != 0)
+                    return -1;
                 if (corners == 0)
                     first = cur;
-                else if (corners >= 2 && add_triangle(b, first, prev, cur) != 0)
-                    return fail(c, "too many triangles or out of memory");
+                else if (corners >= 2 && builder_add_triangle(b, first, prev, cur) != 0)
+                    return read_fail(c, "too many triangles or out of memory");
                 prev = cur;
                 ++corners;
             }
             if (corners < 3)
-                return fail(c, "a face needs at least three vertices, this one has %d", corners);
+                return read_fail(c, "a face needs at least three vertices, this one has %d", corners);
         }
         line = next;
     }
@@ -207,7 +109,7 @@ static int read_obj(char *text, builder *b, context *c)
 }
 
 /* The next token of an OFF file, skipping comments to the end of their line. */
-static const char *off_token(const char *p, context *c)
+static const char *off_token(const char *p, read_context *c)
 {
     for (;;) {
         while (*p && isspace((unsigned char)*p)) {
@@ -222,7 +124,7 @@ static const char *off_token(const char *p, context *c)
     }
 }
 
-static int read_off(const char *text, builder *b, context *c)
+int off_parse_text(char *text, mesh_builder *b, read_context *c)
 {
     c->line = 1;
     const char *p = off_token(text, c);
@@ -233,36 +135,36 @@ static int read_off(const char *text, builder *b, context *c)
     else if (strncmp(p, "OFF", 3) == 0)
         p += 3;
     else
-        return fail(c, "not an OFF file (no OFF header)");
+        return read_fail(c, "not an OFF file (no OFF header)");
     long long nv, nf, ne;
     p = off_token(p, c);
     if (parse_long(&p, &nv) != 0 || (p = off_token(p, c), parse_long(&p, &nf)) != 0 ||
         (p = off_token(p, c), parse_long(&p, &ne)) != 0 || nv < 0 || nf < 0 || nv > INT32_MAX)
-        return fail(c, "expected the counts of vertices, faces and edges");
+        return read_fail(c, "expected the counts of vertices, faces and edges");
     for (long long i = 0; i < nv; ++i) {
         double v[3];
         for (int k = 0; k < 3; ++k)
             if ((p = off_token(p, c), parse_double(&p, &v[k])) != 0)
-                return fail(c, "vertex %lld: expected three coordinates", i);
+                return read_fail(c, "vertex %lld: expected three coordinates", i);
         while (*p && *p != '\n')
             ++p;
-        if (add_vertex(b, v) != 0)
-            return fail(c, "out of memory");
+        if (builder_add_vertex(b, v) != 0)
+            return read_fail(c, "out of memory");
     }
     for (long long f = 0; f < nf; ++f) {
         long long n, idx[3];
         if ((p = off_token(p, c), parse_long(&p, &n)) != 0 || n < 3)
-            return fail(c, "face %lld: expected a vertex count of at least 3", f);
+            return read_fail(c, "face %lld: expected a vertex count of at least 3", f);
         for (long long k = 0; k < n; ++k) {
             long long v;
             if ((p = off_token(p, c), parse_long(&p, &v)) != 0 || v < INT32_MIN || v > INT32_MAX)
-                return fail(c, "face %lld: bad vertex index", f);
+                return read_fail(c, "face %lld: bad vertex index", f);
             if (k < 2)
                 idx[k] = v;
             else {
                 idx[2] = v;
-                if (add_triangle(b, (int32_t)idx[0], (int32_t)idx[1], (int32_t)idx[2]) != 0)
-                    return fail(c, "too many triangles or out of memory");
+                if (builder_add_triangle(b, (int32_t)idx[0], (int32_t)idx[1], (int32_t)idx[2]) != 0)
+                    return read_fail(c, "too many triangles or out of memory");
                 idx[1] = v;
             }
         }
@@ -286,13 +188,12 @@ static int is_off(const char *path, const char *text)
 }
 
 /* Parses NUL-terminated `text` (modified in place) read from `path`. */
-static int parse(const char *path, char *text, sfa_mesh_data *out, context *c)
+static int parse(const char *path, char *text, sfa_mesh_data *out, read_context *c)
 {
-    builder b = {0};
-    const int rc = is_off(path, text) ? read_off(text, &b, c) : read_obj(text, &b, c);
+    mesh_builder b = {0};
+    const int rc = is_off(path, text) ? off_parse_text(text, &b, c) : obj_parse_text(text, &b, c);
     if (rc != 0) {
-        free(b.xyz);
-        free(b.tris);
+        builder_free(&b);
         return -1;
     }
     out->nverts = (int32_t)b.nverts;
@@ -304,10 +205,11 @@ static int parse(const char *path, char *text, sfa_mesh_data *out, context *c)
 
 int mesh_read(const char *path, sfa_mesh_data *out, char *err, size_t err_len)
 {
-    context c = {path ? path : "(null)", err, err_len, 0};
+    read_context c = {path ? path : "(null)", err, err_len, 0, -1};
     if (!path || !out) /* mesh_parse says which */
         return mesh_parse(path, NULL, out, err, err_len);
-    char *text = slurp(path, &c);
+    size_t size;
+    char *text = read_whole_file(path, &size, &c);
     if (!text) {
         memset(out, 0, sizeof *out);
         return -1;
@@ -319,15 +221,39 @@ int mesh_read(const char *path, sfa_mesh_data *out, char *err, size_t err_len)
 
 int mesh_parse(const char *name, char *text, sfa_mesh_data *out, char *err, size_t err_len)
 {
-    context c = {name ? name : "(null)", err, err_len, 0};
+    read_context c = {name ? name : "(null)", err, err_len, 0, -1};
     if (err && err_len)
         err[0] = '\0';
     if (!out)
-        return fail(&c, "no output given");
+        return read_fail(&c, "no output given");
     memset(out, 0, sizeof *out);
     if (!name || !text)
-        return fail(&c, "no name or no text given");
+        return read_fail(&c, "no name or no text given");
     return parse(name, text, out, &c);
+}
+
+void obj_write(FILE *f, const sfa_mesh_data *m, const mesh_write_extras *x)
+{
+    if (x && x->title)
+        fprintf(f, "# %s\n", x->title);
+    for (int32_t i = 0; i < m->nverts; ++i)
+        fprintf(f, "v %.17g %.17g %.17g\n", m->xyz[3 * i], m->xyz[3 * i + 1], m->xyz[3 * i + 2]);
+    for (int32_t i = 0; i < m->ntris; ++i)
+        fprintf(f, "f %d %d %d\n", m->tris[3 * i] + 1, m->tris[3 * i + 1] + 1, m->tris[3 * i + 2] + 1);
+}
+
+/* OFF: counts, then the vertices and triangles, 0-based. The title goes in a comment
+ * after the header line, where OFF readers allow one. */
+void off_write(FILE *f, const sfa_mesh_data *m, const mesh_write_extras *x)
+{
+    fputs("OFF\n", f);
+    if (x && x->title)
+        fprintf(f, "# %s\n", x->title);
+    fprintf(f, "%d %d 0\n", m->nverts, m->ntris);
+    for (int32_t i = 0; i < m->nverts; ++i)
+        fprintf(f, "%.17g %.17g %.17g\n", m->xyz[3 * i], m->xyz[3 * i + 1], m->xyz[3 * i + 2]);
+    for (int32_t i = 0; i < m->ntris; ++i)
+        fprintf(f, "3 %d %d %d\n", m->tris[3 * i], m->tris[3 * i + 1], m->tris[3 * i + 2]);
 }
 
 int mesh_write_obj(const char *path, const sfa_mesh_data *m, const char *comment, char *err, size_t err_len)
@@ -337,12 +263,8 @@ int mesh_write_obj(const char *path, const sfa_mesh_data *m, const char *comment
         snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno));
         return -1;
     }
-    if (comment)
-        fprintf(f, "# %s\n", comment);
-    for (int32_t i = 0; i < m->nverts; ++i)
-        fprintf(f, "v %.17g %.17g %.17g\n", m->xyz[3 * i], m->xyz[3 * i + 1], m->xyz[3 * i + 2]);
-    for (int32_t i = 0; i < m->ntris; ++i)
-        fprintf(f, "f %d %d %d\n", m->tris[3 * i] + 1, m->tris[3 * i + 1] + 1, m->tris[3 * i + 2] + 1);
+    const mesh_write_extras x = {comment, NULL};
+    obj_write(f, m, &x);
     const int failed = ferror(f);
     if (fclose(f) != 0 || failed) {
         snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno));

@@ -22,7 +22,9 @@ typedef struct sfa_mesh_data {
 /* Reads `path`: OFF if the file starts with an OFF header (or is named *.off), OBJ
  * otherwise. OBJ: `v x y z` and `f a b c ...` lines (`a/t/n` and negative, relative
  * indices accepted); polygons are fan-triangulated, other lines ignored. Indices are
- * converted to 0-based and passed on as they are, even if out of range.
+ * converted to 0-based and passed on as they are, even if past the last vertex; an OBJ
+ * index 0, or a relative one before the first vertex, is an error naming its line.
+ * (mesh_formats.h reads every format the tool knows, chosen by extension.)
  * Returns 0, or -1 with `*out` zeroed and a message in `err` (file and line). */
 int mesh_read(const char *path, sfa_mesh_data *out, char *err, size_t err_len);
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// surfadapt remesh IN OUT.vtk: the static use of the library (paper §5.1).
+// surfadapt remesh IN OUT: the static use of the library (paper §5.1).
 #include "remesh.hpp"
 
 #include "cli.hpp"
@@ -91,7 +91,7 @@ int remesh_surface(sfa_surface *s, const char *name, double edge_length, bool is
                     measure(s, SFA_MEASURE_VOLUME_CORRECTION));
     if (out) {
         std::string error;
-        if (!write_surface_vtk(s, out, std::string("surfadapt remesh of ") + name, error)) {
+        if (!write_surface(s, out, std::string("surfadapt remesh of ") + name, error)) {
             std::fprintf(stderr, "surfadapt: %s\n", error.c_str());
             return 1;
         }
@@ -103,7 +103,7 @@ int remesh_surface(sfa_surface *s, const char *name, double edge_length, bool is
 int remesh_command(int argc, char **argv)
 {
     if (argc < 4) {
-        std::fprintf(stderr, "surfadapt remesh: needs an input mesh and an output .vtk file\n%s", usage);
+        std::fprintf(stderr, "surfadapt remesh: needs an input and an output mesh file\n%s", usage);
         return 2;
     }
     const char *in = argv[2], *out = argv[3];
@@ -121,6 +121,9 @@ int remesh_command(int argc, char **argv)
             return 2;
         }
     }
+    // Before the work, not after it: an output the tool cannot write is a usage error.
+    if (!known_output_format(out))
+        return 2;
     sfa_surface *s = surface_from_file(in, drop);
     if (!s)
         return 1;

@@ -1,35 +1,47 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* Fuzzes the command-line tool's mesh reader (OBJ and OFF) with arbitrary text, and hands
- * what it reads to sfa_set_mesh: the reader must fail with a message naming a line or
- * return arrays of the counts it states; the library must then keep its contract.
+/* Fuzzes the command-line tool's mesh readers (mesh_formats.h: OBJ, OFF, STL, PLY, Medit,
+ * legacy VTK, VTU) with arbitrary bytes, and hands what they read to sfa_set_mesh: a
+ * reader must fail with a message naming the file or return arrays of the counts it
+ * states; the library must then keep its contract.
  *
- * Input: one byte choosing the file name (".obj" or ".off"), then the file's text. */
+ * Input: one byte choosing the file name (its value modulo 7: .obj .off .stl .ply .mesh
+ * .vtk .vtu), then the file's bytes as they are (binary STL, PLY and VTU included); the
+ * reader sees them with a NUL after them, as mesh_file_read gives them. */
 #include "contract.h"
-#include "obj_io.h"
+#include "mesh_formats.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     if (size == 0)
         return 0;
-    const char *name = (data[0] & 1) ? "fuzz.off" : "fuzz.obj";
-    char *text = malloc(size);
-    memcpy(text, data + 1, size - 1);
-    text[size - 1] = '\0';
+    static const char *const names[7] = {"fuzz.obj", "fuzz.off", "fuzz.stl", "fuzz.ply",
+                                         "fuzz.mesh", "fuzz.vtk", "fuzz.vtu"};
+    const char *name = names[data[0] % 7];
+    char *bytes = malloc(size);
+    memcpy(bytes, data + 1, size - 1);
+    bytes[size - 1] = '\0';
     sfa_mesh_data m;
+    int base = -1;
     char err[256];
-    if (mesh_parse(name, text, &m, err, sizeof err) != 0) {
+    if (mesh_file_parse(name, bytes, size - 1, &m, &base, err, sizeof err) != 0) {
         FUZZ_REQUIRE(strncmp(err, name, strlen(name)) == 0, "a reader error that names no file: \"%s\"", err);
         FUZZ_REQUIRE(m.nverts == 0 && m.ntris == 0 && !m.xyz && !m.tris, "a failed read left a mesh behind");
     } else {
         FUZZ_REQUIRE(m.nverts >= 0 && m.ntris >= 0, "counts %d %d", m.nverts, m.ntris);
+        FUZZ_REQUIRE(base == 0 || base == 1, "index base %d", base);
         if (m.nverts <= 4096 && m.ntris <= 8192) {
+            /* As the tool passes them: in the file's own base, which must fit. */
+            for (int64_t i = 0; i < 3 * (int64_t)m.ntris; ++i) {
+                FUZZ_REQUIRE(base == 0 || m.tris[i] < INT32_MAX, "index %d cannot be made 1-based", m.tris[i]);
+                m.tris[i] += base;
+            }
             sfa_surface *s = NULL;
             FUZZ_REQUIRE(sfa_create(&s) == SFA_OK, "sfa_create failed");
-            FUZZ_CALL(s, sfa_set_mesh(s, m.nverts, m.xyz, m.ntris, m.tris, 0));
+            FUZZ_CALL(s, sfa_set_mesh(s, m.nverts, m.xyz, m.ntris, m.tris, base));
             sfa_destroy(s);
         }
         mesh_free(&m);
     }
-    free(text);
+    free(bytes);
     return 0;
 }

@@ -1,0 +1,136 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+#include "mesh_formats.h"
+
+#include "format_io.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct {
+    mesh_format format;
+    const char *extension;
+    int index_base;
+} format_entry;
+
+static const format_entry formats[] = {
+    {MESH_FORMAT_OBJ, "obj", 1},  {MESH_FORMAT_OFF, "off", 0},   {MESH_FORMAT_STL, "stl", 0},
+    {MESH_FORMAT_PLY, "ply", 0},  {MESH_FORMAT_MEDIT, "mesh", 1}, {MESH_FORMAT_VTK, "vtk", 0},
+    {MESH_FORMAT_VTU, "vtu", 0},
+};
+enum { format_count = sizeof formats / sizeof formats[0] };
+
+mesh_format mesh_format_of(const char *path)
+{
+    if (!path)
+        return MESH_FORMAT_UNKNOWN;
+    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+    if (!dot || (slash && slash > dot))
+        return MESH_FORMAT_UNKNOWN;
+    for (int i = 0; i < format_count; ++i)
+        if (same_word(dot + 1, formats[i].extension))
+            return formats[i].format;
+    return MESH_FORMAT_UNKNOWN;
+}
+
+const char *mesh_format_extensions(void) { return ".obj, .off, .stl, .ply, .mesh, .vtk, .vtu"; }
+
+int mesh_format_index_base(mesh_format format)
+{
+    for (int i = 0; i < format_count; ++i)
+        if (formats[i].format == format)
+            return formats[i].index_base;
+    return 0;
+}
+
+static int parse_as(mesh_format format, char *data, size_t size, mesh_builder *b, read_context *c)
+{
+    switch (format) {
+    case MESH_FORMAT_OBJ: return obj_parse_text(data, b, c);
+    case MESH_FORMAT_OFF: return off_parse_text(data, b, c);
+    case MESH_FORMAT_STL: return stl_parse(data, size, b, c);
+    case MESH_FORMAT_PLY: return ply_parse(data, size, b, c);
+    case MESH_FORMAT_MEDIT: return medit_parse(data, b, c);
+    case MESH_FORMAT_VTK: return vtk_parse(data, b, c);
+    case MESH_FORMAT_VTU: return vtu_parse(data, size, b, c);
+    case MESH_FORMAT_UNKNOWN: break;
+    }
+    return read_fail(c, "unknown mesh format: the extension must be one of %s", mesh_format_extensions());
+}
+
+int mesh_file_parse(const char *name, char *data, size_t size, sfa_mesh_data *out, int *index_base, char *err,
+                    size_t err_len)
+{
+    read_context c = {name ? name : "(null)", err, err_len, 0, -1};
+    if (err && err_len)
+        err[0] = '\0';
+    if (!out)
+        return read_fail(&c, "no output given");
+    memset(out, 0, sizeof *out);
+    if (!name || !data)
+        return read_fail(&c, "no name or no data given");
+    const mesh_format format = mesh_format_of(name);
+    if (index_base)
+        *index_base = mesh_format_index_base(format);
+    mesh_builder b = {0};
+    if (parse_as(format, data, size, &b, &c) != 0) {
+        builder_free(&b);
+        return -1;
+    }
+    out->nverts = (int32_t)b.nverts;
+    out->ntris = (int32_t)b.ntris;
+    out->xyz = b.xyz;
+    out->tris = b.tris;
+    return 0;
+}
+
+int mesh_file_read(const char *path, sfa_mesh_data *out, int *index_base, char *err, size_t err_len)
+{
+    read_context c = {path ? path : "(null)", err, err_len, 0, -1};
+    if (!path || !out || mesh_format_of(path) == MESH_FORMAT_UNKNOWN) /* mesh_file_parse says why */
+        return mesh_file_parse(path, path ? "" : NULL, 0, out, index_base, err, err_len);
+    size_t size;
+    char *data = read_whole_file(path, &size, &c);
+    if (!data) {
+        memset(out, 0, sizeof *out);
+        return -1;
+    }
+    const int rc = mesh_file_parse(path, data, size, out, index_base, err, err_len);
+    free(data);
+    return rc;
+}
+
+int mesh_file_write(const char *path, const sfa_mesh_data *m, const char *title, const int32_t *rank, char *err,
+                    size_t err_len)
+{
+    const mesh_format format = mesh_format_of(path);
+    if (format == MESH_FORMAT_UNKNOWN) {
+        snprintf(err, err_len, "%s: unknown mesh format: the extension must be one of %s", path ? path : "(null)",
+                 mesh_format_extensions());
+        return -1;
+    }
+    /* Binary formats need "wb" only where it matters; it is the same on POSIX. */
+    FILE *f = fopen(path, "wb");
+    if (!f) {
+        snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno));
+        return -1;
+    }
+    const mesh_write_extras x = {title, rank};
+    switch (format) {
+    case MESH_FORMAT_OBJ: obj_write(f, m, &x); break;
+    case MESH_FORMAT_OFF: off_write(f, m, &x); break;
+    case MESH_FORMAT_STL: stl_write(f, m, &x); break;
+    case MESH_FORMAT_PLY: ply_write(f, m, &x); break;
+    case MESH_FORMAT_MEDIT: medit_write(f, m, &x); break;
+    case MESH_FORMAT_VTK: vtk_write(f, m, &x); break;
+    case MESH_FORMAT_VTU: vtu_write(f, m, &x); break;
+    case MESH_FORMAT_UNKNOWN: break;
+    }
+    const int failed = ferror(f);
+    if (fclose(f) != 0 || failed) {
+        snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno ? errno : EIO));
+        return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,58 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* Mesh files of every format the command-line tool knows, chosen by the file name's
+ * extension (any case) both ways: reading .obj .off .stl .ply .mesh .vtk .vtu, writing the
+ * same. Readers only parse: whether the mesh is acceptable is for sfa_set_mesh() to say,
+ * in the file's own numbering (mesh_file_read gives its index base for that). */
+#ifndef SURFADAPT_APP_MESH_FORMATS_H
+#define SURFADAPT_APP_MESH_FORMATS_H
+
+#include "obj_io.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum {
+    MESH_FORMAT_UNKNOWN = 0,
+    MESH_FORMAT_OBJ,   /* Wavefront OBJ: v / f lines, 1-based */
+    MESH_FORMAT_OFF,   /* Object File Format, 0-based */
+    MESH_FORMAT_STL,   /* stereolithography, ASCII or binary; written binary (float32) */
+    MESH_FORMAT_PLY,   /* Stanford PLY, ASCII or binary; written binary little-endian */
+    MESH_FORMAT_MEDIT, /* INRIA Medit .mesh (MMG's), ASCII, 1-based */
+    MESH_FORMAT_VTK,   /* legacy VTK POLYDATA, ASCII */
+    MESH_FORMAT_VTU    /* VTK XML UnstructuredGrid; written binary appended raw */
+} mesh_format;
+
+/* The format named by the path's extension, or MESH_FORMAT_UNKNOWN. */
+mesh_format mesh_format_of(const char *path);
+
+/* The supported extensions, for messages: ".obj, .off, .stl, .ply, .mesh, .vtk, .vtu". */
+const char *mesh_format_extensions(void);
+
+/* The base of the vertex numbers a format's files use (OBJ and Medit 1, the others 0). */
+int mesh_format_index_base(mesh_format format);
+
+/* Reads `path` in the format of its extension into `out` (0-based triangles, malloc'ed);
+ * `*index_base` (if not NULL) receives the file's own base. Returns 0, or -1 with `*out`
+ * zeroed and a message in `err` naming the file and the line (text formats) or the byte
+ * offset (binary data), or the supported extensions for an unknown one. */
+int mesh_file_read(const char *path, sfa_mesh_data *out, int *index_base, char *err, size_t err_len);
+
+/* mesh_file_read for contents in memory: `data` has `size` bytes followed by a NUL (it may
+ * be modified); `name` chooses the format and names it in messages. */
+int mesh_file_parse(const char *name, char *data, size_t size, sfa_mesh_data *out, int *index_base, char *err,
+                    size_t err_len);
+
+/* Writes `m` (0-based) to `path` in the format of its extension, every coordinate to full
+ * double precision where the format allows (binary STL holds float32). `title` (or NULL)
+ * goes where the format has room for one line of text; `rank` (or NULL: nverts values)
+ * is written as point data "rank" to .vtu and ignored by the other formats. Returns 0, or
+ * -1 with a message in `err`. */
+int mesh_file_write(const char *path, const sfa_mesh_data *m, const char *title, const int32_t *rank, char *err,
+                    size_t err_len);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
