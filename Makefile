@@ -217,7 +217,7 @@ check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE
 	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) "$(FORTRAN_EXAMPLE) 60" $(C_EXAMPLE) \
 	  tests/python/run.sh "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" \
 	  tests/install/test_install.sh tests/cli/test_features_cli.sh tests/cli/test_remesh_cli.sh tests/cli/test_flows_cli.sh \
-	  tests/cli/test_formats_cli.sh \
+	  tests/cli/test_formats_cli.sh tests/cli/test_repair_cli.sh \
 	  tests/cli/test_fidelity.sh tests/readme/test_readme_programs.sh $(SAN_TESTS) $(SAN_UNIT_TESTS) \
 	  $(foreach f,$(FUZZERS),"build/san/tests/replay_$(f) tests/fuzz/corpus/$(f) tests/fuzz/crashes/$(f)")
 

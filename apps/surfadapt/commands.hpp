@@ -8,5 +8,10 @@ int info_command(int argc, char **argv);
 int features_command(int argc, char **argv);
 int convert_command(int argc, char **argv);
 int remesh_command(int argc, char **argv);
+int repair_command(int argc, char **argv);
+
+// Prints to standard error what `surfadapt repair` would change in the file, if anything
+// (for a mesh the library refused).
+void suggest_repair(const char *path);
 int enright_command(int argc, char **argv);
 int vortex_command(int argc, char **argv);

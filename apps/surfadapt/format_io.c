@@ -44,10 +44,27 @@ int builder_add_triangle(mesh_builder *b, int32_t i, int32_t j, int32_t k)
     return 0;
 }
 
+int builder_begin_face(mesh_builder *b)
+{
+    if (!b->record_faces)
+        return 0;
+    if (b->nfaces == b->fcap) {
+        const int64_t cap = b->fcap ? 2 * b->fcap : 1024;
+        int32_t *grown = realloc(b->face_first, sizeof(int32_t) * (size_t)cap);
+        if (!grown)
+            return -1;
+        b->face_first = grown;
+        b->fcap = cap;
+    }
+    b->face_first[b->nfaces++] = (int32_t)b->ntris;
+    return 0;
+}
+
 void builder_free(mesh_builder *b)
 {
     free(b->xyz);
     free(b->tris);
+    free(b->face_first);
     memset(b, 0, sizeof *b);
 }
 

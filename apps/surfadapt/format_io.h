@@ -17,10 +17,19 @@ typedef struct {
     double *xyz;
     int32_t *tris;
     int64_t nverts, ntris, vcap, tcap;
+    /* Kept only when record_faces is set (for `surfadapt repair`, which triangulates
+     * polygons itself): face f of the file became triangles face_first[f] up to the next
+     * face's first, fanned from its first corner. */
+    int record_faces;
+    int32_t *face_first;
+    int64_t nfaces, fcap;
 } mesh_builder;
 
 int builder_add_vertex(mesh_builder *b, const double p[3]);
 int builder_add_triangle(mesh_builder *b, int32_t i, int32_t j, int32_t k);
+/* A reader of polygons calls this before the triangles it fans a face into (from the
+ * face's first corner); a reader that never calls it gives one face per triangle. */
+int builder_begin_face(mesh_builder *b);
 void builder_free(mesh_builder *b);
 
 /* Where a reader is, for its messages: "path:line: " while `line` > 0, else

@@ -20,8 +20,10 @@ int info_command(int argc, char **argv)
     if (!read_drop_option(argc, argv, 3, "info", drop))
         return 2;
     sfa_surface *s = surface_from_file(argv[2], drop);
-    if (!s)
+    if (!s) {
+        suggest_repair(argv[2]);
         return 1;
+    }
     int32_t nverts = 0, ntris = 0;
     sfa_get_counts(s, &nverts, &ntris);
     std::printf("%s: %d vertices, %d triangles\n", argv[2], nverts, ntris);

@@ -8,6 +8,7 @@
 //   surfadapt info FILE         validate a mesh and print its measures
 //   surfadapt features IN OUT   write the detected features of a mesh, e.g. as VTK for ParaView
 //   surfadapt convert IN OUT    a mesh file in another format
+//   surfadapt repair IN OUT     mend a mesh the library refuses, reporting each change
 #include "cli.hpp"
 #include "commands.hpp"
 
@@ -15,7 +16,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
-#include <unistd.h>
 
 const char *const usage =
     "usage: surfadapt COMMAND [OPTIONS]\n"
@@ -61,7 +61,17 @@ const char *const usage =
     "        result to OUT: as .vtk with its features (as for 'features'), as .vtu with\n"
     "        the feature rank as point data, in the other formats the mesh alone\n"
     "  info FILE [--drop-unreferenced]\n"
-    "        read a mesh, validate it and print its measures\n"
+    "        read a mesh, validate it and print its measures and its components (closed or\n"
+    "        open with their boundary loops, genus, volume; inside-out ones are named); a\n"
+    "        mesh the library refuses gets the reason and what 'repair' would change\n"
+    "  repair IN OUT\n"
+    "        mend what the library refuses in a mesh from elsewhere, reporting each change:\n"
+    "        merge vertices at exactly the same position, triangulate polygons (ear\n"
+    "        clipping), drop faces with missing vertices, degenerate and duplicate\n"
+    "        triangles, orient each component consistently, split bow-tie vertices, turn\n"
+    "        inside-out closed components outward, drop unused vertices; then say whether\n"
+    "        the library accepts the result. Edges of three or more triangles and\n"
+    "        non-orientable components are reported, not changed\n"
     "  features IN OUT [--drop-unreferenced]\n"
     "        read a mesh, detect its ridges and corners and write them: to OUT.vtk a\n"
     "        legacy VTK file for ParaView, triangles (POLYGONS) and ridge edges (LINES)\n"
@@ -83,25 +93,22 @@ const char *const usage =
 
 namespace {
 
-// OpenMP reads OMP_WAIT_POLICY once, when the program starts, and by default lets its idle
+// OpenMP reads OMP_WAIT_POLICY once, when its runtime starts, and by default lets its idle
 // worker threads spin between loops. On a machine whose cores are busy with other work
 // (another rank, another job) the spinning threads take the cores from the one doing the
 // work: a remesh of the bunny took 3.7-3.9 s that way and 2.6-3.1 s with passive waiting
-// beside a busy core. So, unless the user chose a policy, the tool starts itself again
-// with passive waiting; if that fails it goes on as it is.
-void wait_passively(char **argv)
-{
-    if (std::getenv("OMP_WAIT_POLICY"))
-        return;
-    setenv("OMP_WAIT_POLICY", "passive", 1);
-    execv("/proc/self/exe", argv);
-}
+// beside a busy core. So, unless the user chose a policy, the tool asks for passive
+// waiting. It must do so before the runtime starts, which is before any constructor of
+// the program runs: functions in .preinit_array are the ones the loader runs earlier.
+void wait_passively(int, char **, char **) { setenv("OMP_WAIT_POLICY", "passive", 0); }
+
+__attribute__((section(".preinit_array"), used)) void (*const wait_passively_first)(int, char **, char **) =
+    wait_passively;
 
 } // namespace
 
 int main(int argc, char **argv)
 {
-    wait_passively(argv);
     if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
         std::fputs(usage, argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
@@ -120,6 +127,8 @@ int main(int argc, char **argv)
         return demo_command(argc, argv);
     if (command == "remesh")
         return remesh_command(argc, argv);
+    if (command == "repair")
+        return repair_command(argc, argv);
     if (command == "enright")
         return enright_command(argc, argv);
     if (command == "vortex")

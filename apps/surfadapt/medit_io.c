@@ -48,7 +48,7 @@ static int read_elements(const char **p, read_context *c, long long count, int c
         if (text_long(p, c, '#', &ref) != 0)
             return read_fail(c, "%s %lld: expected a reference after the vertices",
                              corners == 3 ? "triangle" : "quadrilateral", e + 1);
-        if (builder_add_triangle(b, v[0], v[1], v[2]) != 0 ||
+        if (builder_begin_face(b) != 0 || builder_add_triangle(b, v[0], v[1], v[2]) != 0 ||
             (corners == 4 && builder_add_triangle(b, v[0], v[2], v[3]) != 0))
             return read_fail(c, "too many triangles or out of memory");
     }

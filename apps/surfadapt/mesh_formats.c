@@ -59,12 +59,15 @@ static int parse_as(mesh_format format, char *data, size_t size, mesh_builder *b
     return read_fail(c, "unknown mesh format: the extension must be one of %s", mesh_format_extensions());
 }
 
-int mesh_file_parse(const char *name, char *data, size_t size, sfa_mesh_data *out, int *index_base, char *err,
-                    size_t err_len)
+/* mesh_file_parse, and with `faces` not NULL the faces as mesh_file_read_faces gives them. */
+static int parse_file(const char *name, char *data, size_t size, sfa_mesh_data *out, mesh_faces *faces,
+                      int *index_base, char *err, size_t err_len)
 {
     read_context c = {name ? name : "(null)", err, err_len, 0, -1};
     if (err && err_len)
         err[0] = '\0';
+    if (faces)
+        memset(faces, 0, sizeof *faces);
     if (!out)
         return read_fail(&c, "no output given");
     memset(out, 0, sizeof *out);
@@ -74,9 +77,21 @@ int mesh_file_parse(const char *name, char *data, size_t size, sfa_mesh_data *ou
     if (index_base)
         *index_base = mesh_format_index_base(format);
     mesh_builder b = {0};
+    b.record_faces = faces != NULL;
     if (parse_as(format, data, size, &b, &c) != 0) {
         builder_free(&b);
         return -1;
+    }
+    if (faces && b.nfaces == 0) /* a format of triangles only: each is a face */
+        for (int64_t t = 0; t < b.ntris; ++t)
+            if (builder_begin_face(&b) != 0) {
+                builder_free(&b);
+                return read_fail(&c, "out of memory");
+            }
+    if (faces) {
+        faces->nfaces = (int32_t)b.nfaces;
+        faces->first_triangle = b.face_first;
+        b.face_first = NULL;
     }
     out->nverts = (int32_t)b.nverts;
     out->ntris = (int32_t)b.ntris;
@@ -85,20 +100,48 @@ int mesh_file_parse(const char *name, char *data, size_t size, sfa_mesh_data *ou
     return 0;
 }
 
-int mesh_file_read(const char *path, sfa_mesh_data *out, int *index_base, char *err, size_t err_len)
+int mesh_file_parse(const char *name, char *data, size_t size, sfa_mesh_data *out, int *index_base, char *err,
+                    size_t err_len)
+{
+    return parse_file(name, data, size, out, NULL, index_base, err, err_len);
+}
+
+static int read_file(const char *path, sfa_mesh_data *out, mesh_faces *faces, int *index_base, char *err,
+                     size_t err_len)
 {
     read_context c = {path ? path : "(null)", err, err_len, 0, -1};
-    if (!path || !out || mesh_format_of(path) == MESH_FORMAT_UNKNOWN) /* mesh_file_parse says why */
-        return mesh_file_parse(path, path ? "" : NULL, 0, out, index_base, err, err_len);
+    if (!path || !out || mesh_format_of(path) == MESH_FORMAT_UNKNOWN) /* parse_file says why */
+        return parse_file(path, path ? "" : NULL, 0, out, faces, index_base, err, err_len);
     size_t size;
     char *data = read_whole_file(path, &size, &c);
     if (!data) {
         memset(out, 0, sizeof *out);
+        if (faces)
+            memset(faces, 0, sizeof *faces);
         return -1;
     }
-    const int rc = mesh_file_parse(path, data, size, out, index_base, err, err_len);
+    const int rc = parse_file(path, data, size, out, faces, index_base, err, err_len);
     free(data);
     return rc;
+}
+
+int mesh_file_read(const char *path, sfa_mesh_data *out, int *index_base, char *err, size_t err_len)
+{
+    return read_file(path, out, NULL, index_base, err, err_len);
+}
+
+int mesh_file_read_faces(const char *path, sfa_mesh_data *out, mesh_faces *faces, int *index_base, char *err,
+                         size_t err_len)
+{
+    return read_file(path, out, faces, index_base, err, err_len);
+}
+
+void mesh_faces_free(mesh_faces *faces)
+{
+    if (!faces)
+        return;
+    free(faces->first_triangle);
+    memset(faces, 0, sizeof *faces);
 }
 
 int mesh_file_write(const char *path, const sfa_mesh_data *m, const char *title, const int32_t *rank, char *err,

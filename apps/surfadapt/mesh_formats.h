@@ -38,6 +38,21 @@ int mesh_format_index_base(mesh_format format);
  * offset (binary data), or the supported extensions for an unknown one. */
 int mesh_file_read(const char *path, sfa_mesh_data *out, int *index_base, char *err, size_t err_len);
 
+/* The faces of a file as it has them, for `surfadapt repair`, which triangulates polygons
+ * itself: face f became triangles first_triangle[f] up to first_triangle[f + 1] (or the
+ * last triangle) of the mesh read, fanned from its first corner, so its corners are the
+ * first triangle's three and the third of each further one. Formats of triangles only
+ * (STL) give one face per triangle. */
+typedef struct {
+    int32_t nfaces;
+    int32_t *first_triangle;
+} mesh_faces;
+
+/* mesh_file_read, and the faces (`faces` zeroed on failure); free them with mesh_faces_free. */
+int mesh_file_read_faces(const char *path, sfa_mesh_data *out, mesh_faces *faces, int *index_base, char *err,
+                         size_t err_len);
+void mesh_faces_free(mesh_faces *faces);
+
 /* mesh_file_read for contents in memory: `data` has `size` bytes followed by a NUL (it may
  * be modified); `name` chooses the format and names it in messages. */
 int mesh_file_parse(const char *name, char *data, size_t size, sfa_mesh_data *out, int *index_base, char *err,

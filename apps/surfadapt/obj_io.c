@@ -87,6 +87,8 @@ int obj_parse_text(char *text, mesh_builder *b, read_context *c)
             int32_t first = 0, prev = 0, cur = 0;
             int corners = 0;
             ++p;
+            if (builder_begin_face(b) != 0)
+                return read_fail(c, "out of memory");
             for (;;) {
                 p = skip_blanks(p);
                 if (*p == '\0' || *p == '#')
@@ -155,6 +157,8 @@ int off_parse_text(char *text, mesh_builder *b, read_context *c)
         long long n, idx[3];
         if ((p = off_token(p, c), parse_long(&p, &n)) != 0 || n < 3)
             return read_fail(c, "face %lld: expected a vertex count of at least 3", f);
+        if (builder_begin_face(b) != 0)
+            return read_fail(c, "out of memory");
         for (long long k = 0; k < n; ++k) {
             long long v;
             if ((p = off_token(p, c), parse_long(&p, &v)) != 0 || v < INT32_MIN || v > INT32_MAX)

@@ -251,6 +251,8 @@ static int read_element(ply_reader *r, const ply_element *e, mesh_builder *b)
             if (p->role == 4 && count < 3)
                 return read_fail(r->c, "face %lld: a face needs at least three vertices, this one has %g", i, count);
             int32_t first = 0, prev = 0;
+            if (p->role == 4 && builder_begin_face(b) != 0)
+                return read_fail(r->c, "out of memory");
             /* Every value read consumes data, so the loop ends with the data at the latest. */
             for (double j = 0; j < count; ++j) {
                 if (read_value(r, p->type, &v) != 0)

@@ -332,7 +332,8 @@ void turn_outward(const std::vector<double> &xyz, std::vector<Tri> &tris, const 
 int32_t RepairReport::changes() const
 {
     return faces_out_of_range + vertices_merged + polygons_triangulated + degenerate_dropped + duplicates_dropped +
-           triangles_flipped + components_turned_outward + bowties_split + unreferenced_dropped;
+           triangles_flipped + components_turned_outward + edges_with_many_faces + bowties_split +
+           unreferenced_dropped;
 }
 
 std::vector<std::string> RepairReport::lines() const
@@ -362,13 +363,16 @@ std::vector<std::string> RepairReport::lines() const
         " to agree with their neighbours' orientation");
     say(components_turned_outward, "turned # closed component outward", "turned # closed components outward",
         " (it was inside-out: negative volume)");
+    say(edges_with_many_faces, "separated the triangles at # edge of three or more",
+        "separated the triangles at # edges of three or more",
+        " (each sheet through it gets its own copy of the edge: its ends are split as bow-ties)");
     say(bowties_split, "split # bow-tie vertex", "split # bow-tie vertices",
         " (fans that touched only there get a vertex each)");
     say(unreferenced_dropped, "dropped # vertex no triangle uses", "dropped # vertices no triangle uses", "");
-    say(edges_with_many_faces, "left # edge of three or more triangles", "left # edges of three or more triangles",
-        " (non-manifold: no single right repair; the library refuses them)");
     say(non_orientable_components, "left # component that cannot be oriented",
         "left # components that cannot be oriented", " (like a Moebius strip; the library refuses them)");
+    say(edges_with_many_faces_left, "left # edge of three or more triangles", "left # edges of three or more triangles",
+        " (their sheets also meet elsewhere, so splitting its ends does not part them)");
     return out;
 }
 
@@ -454,7 +458,8 @@ RepairReport repair_mesh(const PolygonMesh &in, TriangleSoup &out)
     std::vector<Tri> across = neighbours(tris, report.edges_with_many_faces);
     orient(tris, across, report);
     split_bowties(out.xyz, tris, across, report);
-    across = neighbours(tris, report.edges_with_many_faces);
+    across = neighbours(tris, report.edges_with_many_faces_left);
+    report.edges_with_many_faces -= report.edges_with_many_faces_left;
     turn_outward(out.xyz, tris, across, report);
 
     // Drop the vertices nothing uses any more (merged ones among them), in order.

@@ -27,11 +27,15 @@ struct RepairReport {
     int32_t duplicates_dropped = 0;        // the same three vertices as an earlier triangle
     int32_t triangles_flipped = 0;         // turned to agree with their component's orientation
     int32_t components_turned_outward = 0; // closed components that were inside-out
+    // Edges of three or more triangles: their triangles are joined to none across them, so
+    // the bow-tie split below gives each sheet through the edge its own copy of it (two
+    // bodies touching along an edge come apart; a fin becomes three sheets).
+    int32_t edges_with_many_faces = 0;
     int32_t bowties_split = 0;             // vertices where fans only touched: one copy per extra fan
     int32_t unreferenced_dropped = 0;      // vertices no triangle uses any more
     // Left as they are, for the user to see to (no single right answer):
-    int32_t edges_with_many_faces = 0;     // edges of three or more triangles
     int32_t non_orientable_components = 0; // Möbius-like: no orientation agrees across every edge
+    int32_t edges_with_many_faces_left = 0; // where the sheets through such an edge also meet elsewhere
     int32_t changes() const;
     // One line per nonzero count, e.g. "split 1 bow-tie vertex".
     std::vector<std::string> lines() const;

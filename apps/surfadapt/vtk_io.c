@@ -22,7 +22,11 @@ static int add_cell(const char *section, long long cell, const long long *v, lon
     for (long long k = 0; k < n; ++k)
         if (v[k] < INT32_MIN || v[k] > INT32_MAX)
             return read_fail(c, "%s cell %lld: vertex index %lld out of range", section, cell, v[k]);
+    if (polygons && builder_begin_face(b) != 0)
+        return read_fail(c, "out of memory");
     for (long long k = 2; k < n; ++k) {
+        if (!polygons && builder_begin_face(b) != 0) /* a strip's triangles are no fan */
+            return read_fail(c, "out of memory");
         int32_t t[3] = {(int32_t)v[polygons ? 0 : k - 2], (int32_t)v[k - 1], (int32_t)v[k]};
         if (strips && k % 2 == 1) { /* every other triangle of a strip turns the other way */
             t[0] = (int32_t)v[k - 1];

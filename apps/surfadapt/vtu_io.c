@@ -371,6 +371,8 @@ int vtu_parse(char *data, size_t size, mesh_builder *b, read_context *c)
         for (long long k = 0; k < n && rc == 0; ++k)
             if (v[k] < INT32_MIN || v[k] > INT32_MAX)
                 rc = (at(&f, tags[2]), read_fail(c, "cell %lld: vertex index %lld out of range", i, v[k]));
+        if (rc == 0 && builder_begin_face(b) != 0)
+            rc = read_fail(c, "out of memory");
         for (long long k = 2; k < n && rc == 0; ++k)
             if (builder_add_triangle(b, (int32_t)v[0], (int32_t)v[k - 1], (int32_t)v[k]) != 0)
                 rc = read_fail(c, "too many triangles or out of memory");
