@@ -117,10 +117,10 @@ def two_drops():
     size = [1500, 450]
     view = new_view(size)
     show_mesh(OpenDataFile(os.path.join(WORK, "two_drops.obj")), view)
-    label(view, "before", [0.2, 0.88])
-    label(view, "the call that merges them", [0.42, 0.88])
-    label(view, "six sfa_adapt calls later", [0.7, 0.88])
-    look(view, [0.2, -1.0, 0.35], [0, 0, 1], zoom=1.5)
+    label(view, "before", [0.17, 0.85])
+    label(view, "the call that merges them", [0.4, 0.85])
+    label(view, "six sfa_adapt calls later", [0.7, 0.85])
+    look(view, [0.2, -1.0, 0.35], [0, 0, 1], zoom=2.1)
     save(view, "two-drops.png", size)
 
 
