@@ -165,6 +165,9 @@ $(ALLOC_HOOK_OBJ): tests/c/alloc_hook/alloc_hook.cpp | deps
 
 # The predicates' test checks them against exact rational arithmetic (GMP, test-only).
 build/tests/unit_predicates: UNIT_LIBS := -lgmpxx -lgmp
+# The repair of the command-line tool, tested with the library that judges its result.
+build/tests/unit_repair: build/apps/surfadapt/repair.o
+build/tests/unit_repair: UNIT_LIBS := build/apps/surfadapt/repair.o
 $(UNIT_TESTS): build/tests/%: tests/unit/%.cpp $(LIB_A) $(TEST_SUPPORT_OBJ)
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -Itests/c -Iapps/surfadapt -MMD -MP -o $@ $< $(TEST_SUPPORT_OBJ) $(LIB_A) -lcmocka $(UNIT_LIBS) -lm

@@ -457,6 +457,8 @@ RepairReport repair_mesh(const PolygonMesh &in, TriangleSoup &out)
 
     std::vector<Tri> across = neighbours(tris, report.edges_with_many_faces);
     orient(tris, across, report);
+    int32_t same_edges_with_many = 0;
+    across = neighbours(tris, same_edges_with_many); // turning a triangle round renumbers its sides
     split_bowties(out.xyz, tris, across, report);
     across = neighbours(tris, report.edges_with_many_faces_left);
     report.edges_with_many_faces -= report.edges_with_many_faces_left;
