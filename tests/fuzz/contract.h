@@ -104,31 +104,46 @@ static inline double fuzz_crossings(const sfa_surface *s)
             FUZZ_REQUIRE(fuzz_crossings(s) == 0, "%s returned SFA_OK and left the surface crossing itself", #call); \
     } while (0)
 
-/* Every read-only query of a surface, each checked. */
+/* Runs a read-only query (the surface is const to it) and checks it against `before`, one
+ * snapshot taken for a batch of queries: a snapshot per query cost most of a fuzzing run. */
+#define FUZZ_QUERY(s, before, call)                                                                                    \
+    do {                                                                                                               \
+        const int rc_ = (call);                                                                                        \
+        fuzz_check_call((s), rc_, (before), #call);                                                                    \
+    } while (0)
+
+/* Every read-only query of a surface, each checked; the surface is the same after them all. */
 static inline void fuzz_query_everything(sfa_surface *s)
 {
+    snapshot before, after;
+    char why[256];
+    snapshot_take(s, &before);
     int32_t nv = 0, nt = 0;
-    FUZZ_CALL(s, sfa_get_counts(s, &nv, &nt));
+    FUZZ_QUERY(s, &before, sfa_get_counts(s, &nv, &nt));
     const size_t n = (size_t)(nv > 0 ? nv : 1), m = (size_t)(nt > 0 ? nt : 1);
     double value = 0, *d3 = malloc(sizeof(double) * 3 * n), *e3 = malloc(sizeof(double) * 3 * n);
     double *s2 = malloc(sizeof(double) * 2 * n), *b3 = malloc(sizeof(double) * 3 * n);
     int32_t *i1 = malloc(sizeof(int32_t) * n), *edges = malloc(sizeof(int32_t) * 6 * m), count = 0;
     for (int q = 0; q <= SFA_MEASURE_DROPS_REMOVED; ++q) {
-        FUZZ_CALL(s, sfa_measure(s, q, &value));
-        FUZZ_CALL(s, sfa_measure_component(s, 0, q, &value));
+        FUZZ_QUERY(s, &before, sfa_measure(s, q, &value));
+        FUZZ_QUERY(s, &before, sfa_measure_component(s, 0, q, &value));
     }
-    FUZZ_CALL(s, sfa_get_component_count(s, &count));
-    FUZZ_CALL(s, sfa_get_components(s, nv, i1));
-    FUZZ_CALL(s, sfa_get_feature_ranks(s, nv, i1));
-    FUZZ_CALL(s, sfa_get_vertex_frames(s, nv, d3, e3, s2));
-    FUZZ_CALL(s, sfa_get_ridge_edges(s, 3 * nt, edges, &count, 0));
-    FUZZ_CALL(s, sfa_get_vertex_origins(s, nv, i1, b3, 0));
+    FUZZ_QUERY(s, &before, sfa_get_component_count(s, &count));
+    FUZZ_QUERY(s, &before, sfa_get_components(s, nv, i1));
+    FUZZ_QUERY(s, &before, sfa_get_feature_ranks(s, nv, i1));
+    FUZZ_QUERY(s, &before, sfa_get_vertex_frames(s, nv, d3, e3, s2));
+    FUZZ_QUERY(s, &before, sfa_get_ridge_edges(s, 3 * nt, edges, &count, 0));
+    FUZZ_QUERY(s, &before, sfa_get_vertex_origins(s, nv, i1, b3, 0));
     free(d3);
     free(e3);
     free(s2);
     free(b3);
     free(i1);
     free(edges);
+    snapshot_take(s, &after);
+    FUZZ_REQUIRE(snapshot_equal(&before, &after, why, sizeof why), "the queries changed the surface: %s", why);
+    snapshot_free(&before);
+    snapshot_free(&after);
 }
 
 /* Reads little bytes from a fuzzer's input, zeros once it runs out. */

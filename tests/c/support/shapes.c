@@ -467,7 +467,11 @@ void snapshot_take(const sfa_surface *s, snapshot *out)
     for (int f = 0; f < SNAPSHOT_MAX_FIELDS; ++f) {
         out->fields[f] = xmalloc(sizeof(double) * cap);
         memset(out->fields[f], SNAPSHOT_FILL, sizeof(double) * cap);
-        out->field_status[f] = sfa_get_field(s, f, (int32_t)cap, out->fields[f]);
+        // Field ids are given out 0, 1, 2, ...: past the first id that fails, every one
+        // fails the same way, and a field added later shows at that first id.
+        out->field_status[f] = f > 0 && out->field_status[f - 1] != SFA_OK
+                                   ? out->field_status[f - 1]
+                                   : sfa_get_field(s, f, (int32_t)cap, out->fields[f]);
     }
 }
 

@@ -135,7 +135,8 @@ typedef struct snapshot {
     int param_status[SHAPES_NPARAMS];
     double params[SHAPES_NPARAMS];
     /* Field id f read into a buffer of SNAPSHOT_MAX_NCOMP*nverts doubles prefilled with a
-     * fixed byte pattern: the whole buffer is compared, so the field's size counts too. */
+     * fixed byte pattern: the whole buffer is compared, so the field's size counts too. Ids
+     * past the first that fails are not read (they fail the same way: ids are consecutive). */
     int field_status[SNAPSHOT_MAX_FIELDS];
     double *fields[SNAPSHOT_MAX_FIELDS];
 } snapshot;
