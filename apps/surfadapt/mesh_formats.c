@@ -103,11 +103,12 @@ int mesh_file_read(const char *path, sfa_mesh_data *out, int *index_base, char *
 
 /* The arrays' names go into XML attributes as they are, and ParaView keeps one array of a
  * name: both are checked here rather than written into a file it then misreads. */
-static int arrays_ok(const char *path, const char *kind, const mesh_data_array *a, int n, char *err, size_t err_len)
+static int arrays_ok(const char *path, const char *kind, const mesh_data_array *a, int n, int32_t tuples, char *err,
+                     size_t err_len)
 {
     for (int i = 0; i < n; ++i) {
         const char *name = a[i].name;
-        if (!name || !*name || strpbrk(name, "\"<>&") || a[i].ncomp < 1 || !a[i].values ||
+        if (!name || !*name || strpbrk(name, "\"<>&") || a[i].ncomp < 1 || (!a[i].values && tuples > 0) ||
             (a[i].type != MESH_ARRAY_FLOAT64 && a[i].type != MESH_ARRAY_INT32)) {
             snprintf(err, err_len, "%s: %s array %d ('%s'): needs a name without '\"', '<', '>' or '&', a type, "
                      "values and at least one component", path, kind, i, name ? name : "(null)");
@@ -179,8 +180,8 @@ int mesh_file_write_vtu(const char *path, const sfa_mesh_data *m, const char *ti
         snprintf(err, err_len, "%s: bad list of point or cell data arrays", path);
         return -1;
     }
-    if (arrays_ok(path, "point data", point_data, npoint_data, err, err_len) != 0 ||
-        arrays_ok(path, "cell data", cell_data, ncell_data, err, err_len) != 0)
+    if (arrays_ok(path, "point data", point_data, npoint_data, m->nverts, err, err_len) != 0 ||
+        arrays_ok(path, "cell data", cell_data, ncell_data, m->ntris, err, err_len) != 0)
         return -1;
     const mesh_write_extras x = {title, point_data, cell_data, npoint_data, ncell_data};
     return write_file(path, MESH_FORMAT_VTU, m, &x, err, err_len);
