@@ -66,7 +66,7 @@ APP_OBJS  := $(APP_CXX:%.cpp=build/%.o) $(APP_C:%.c=build/%.o)
 MESH_IO          := $(addprefix apps/surfadapt/,obj_io.c format_io.c mesh_formats.c stl_io.c ply_io.c medit_io.c \
                       vtk_io.c vtu_io.c)
 TEST_SUPPORT     := $(sort $(wildcard tests/c/support/*.c)) $(MESH_IO) apps/surfadapt/icosphere.c \
-                    apps/surfadapt/machined_part.c
+                    apps/surfadapt/machined_part.c apps/surfadapt/vtu_series.c
 TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=build/%.o)
 C_TESTS          := $(patsubst tests/c/%.c,build/tests/%,$(sort $(wildcard tests/c/test_*.c)))
 UNIT_TESTS       := $(patsubst tests/unit/%.cpp,build/tests/%,$(sort $(wildcard tests/unit/unit_*.cpp)))

@@ -6,7 +6,7 @@
 #include "flows.hpp"
 #include "icosphere.h"
 #include "progress.hpp"
-#include "time_series.hpp"
+#include "vtu_series.h"
 
 #include <algorithm>
 #include <chrono>
@@ -58,7 +58,16 @@ int run_flow(const FlowRun &run, FlowResult &result)
                 run.topology_change ? "on" : "off", run.volume_correction ? "on" : "off");
     std::printf("%5s %6s %9s %10s %13s %10s %9s %9s %9s %9s %8s\n", "step", "t", "vertices", "triangles",
                 "volume err %", "area ratio", "min angle", "max angle", "max turn", "crossings", "seconds");
-    TimeSeries series(run.out_dir, "surface");
+    FlowPeriod flow{run.period};
+    // The flow's own velocity goes with each saved step: what moved the surface there.
+    vtu_series series;
+    vtu_series_init(&series, run.out_dir.c_str(), "surface");
+    series.velocity = run.velocity;
+    series.velocity_ctx = &flow;
+    struct SeriesEnd {
+        vtu_series &ts;
+        ~SeriesEnd() { vtu_series_free(&ts); }
+    } series_end{series};
     std::string error;
     const auto report = [&](int step, double t) {
         int32_t v = 0, tcount = 0;
@@ -70,7 +79,11 @@ int run_flow(const FlowRun &run, FlowResult &result)
                     measure(s, SFA_MEASURE_MIN_ANGLE), measure(s, SFA_MEASURE_MAX_ANGLE),
                     measure(s, SFA_MEASURE_MAX_NORMAL_TURN), crossings, result.seconds);
         std::fflush(stdout);
-        return run.out_dir.empty() || series.save(s, t, error);
+        char message[512];
+        if (run.out_dir.empty() || vtu_series_save(&series, s, t, message, sizeof message) == 0)
+            return true;
+        error = message;
+        return false;
     };
     // At t = 0 and every quarter period, when the steps divide into quarters.
     const auto save = [&](int step, double t) {
@@ -113,7 +126,6 @@ int run_flow(const FlowRun &run, FlowResult &result)
         result.drops_removed += removed;
         return true;
     };
-    FlowPeriod flow{run.period};
     const auto start = Clock::now();
     double t = 0;
     for (int step = 1; step <= run.steps; ++step) {

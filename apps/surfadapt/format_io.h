@@ -6,7 +6,7 @@
 #ifndef SURFADAPT_APP_FORMAT_IO_H
 #define SURFADAPT_APP_FORMAT_IO_H
 
-#include "obj_io.h"
+#include "mesh_formats.h"
 
 #include <stdint.h>
 #include <stdio.h>
@@ -83,10 +83,11 @@ int vtk_parse(char *data, mesh_builder *b, read_context *c);
 int vtu_parse(char *data, size_t size, mesh_builder *b, read_context *c);
 
 /* What a writer may add to the mesh: a title or comment line (NULL for none) and, for
- * .vtu, per-vertex feature ranks as point data "rank" (NULL for none). */
+ * .vtu, named point and cell data arrays (mesh_formats.h; checked by the caller). */
 typedef struct {
     const char *title;
-    const int32_t *rank;
+    const mesh_data_array *point_data, *cell_data;
+    int npoint_data, ncell_data;
 } mesh_write_extras;
 
 /* The writers: `m` to the open file `f`; errors of the stream are the caller's to check. */

@@ -144,6 +144,60 @@ void mesh_faces_free(mesh_faces *faces)
     memset(faces, 0, sizeof *faces);
 }
 
+/* The arrays' names go into XML attributes as they are, and ParaView keeps one array of a
+ * name: both are checked here rather than written into a file it then misreads. */
+static int arrays_ok(const char *path, const char *kind, const mesh_data_array *a, int n, int32_t tuples, char *err,
+                     size_t err_len)
+{
+    for (int i = 0; i < n; ++i) {
+        const char *name = a[i].name;
+        if (!name || !*name || strpbrk(name, "\"<>&") || a[i].ncomp < 1 || (!a[i].values && tuples > 0) ||
+            (a[i].type != MESH_ARRAY_FLOAT64 && a[i].type != MESH_ARRAY_INT32)) {
+            snprintf(err, err_len, "%s: %s array %d ('%s'): needs a name without '\"', '<', '>' or '&', a type, "
+                     "values and at least one component", path, kind, i, name ? name : "(null)");
+            return -1;
+        }
+        for (const unsigned char *c = (const unsigned char *)name; *c; ++c)
+            if (*c < 0x20) {
+                snprintf(err, err_len, "%s: %s array %d: a control character in its name", path, kind, i);
+                return -1;
+            }
+        for (int j = 0; j < i; ++j)
+            if (strcmp(a[j].name, name) == 0) {
+                snprintf(err, err_len, "%s: two %s arrays named '%s'", path, kind, name);
+                return -1;
+            }
+    }
+    return 0;
+}
+
+static int write_file(const char *path, mesh_format format, const sfa_mesh_data *m, const mesh_write_extras *x,
+                      char *err, size_t err_len)
+{
+    /* Binary formats need "wb" only where it matters; it is the same on POSIX. */
+    FILE *f = fopen(path, "wb");
+    if (!f) {
+        snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno));
+        return -1;
+    }
+    switch (format) {
+    case MESH_FORMAT_OBJ: obj_write(f, m, x); break;
+    case MESH_FORMAT_OFF: off_write(f, m, x); break;
+    case MESH_FORMAT_STL: stl_write(f, m, x); break;
+    case MESH_FORMAT_PLY: ply_write(f, m, x); break;
+    case MESH_FORMAT_MEDIT: medit_write(f, m, x); break;
+    case MESH_FORMAT_VTK: vtk_write(f, m, x); break;
+    case MESH_FORMAT_VTU: vtu_write(f, m, x); break;
+    case MESH_FORMAT_UNKNOWN: break;
+    }
+    const int failed = ferror(f);
+    if (fclose(f) != 0 || failed) {
+        snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno ? errno : EIO));
+        return -1;
+    }
+    return 0;
+}
+
 int mesh_file_write(const char *path, const sfa_mesh_data *m, const char *title, const int32_t *rank, char *err,
                     size_t err_len)
 {
@@ -153,27 +207,25 @@ int mesh_file_write(const char *path, const sfa_mesh_data *m, const char *title,
                  mesh_format_extensions());
         return -1;
     }
-    /* Binary formats need "wb" only where it matters; it is the same on POSIX. */
-    FILE *f = fopen(path, "wb");
-    if (!f) {
-        snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno));
+    const mesh_data_array ranks = {"rank", MESH_ARRAY_INT32, 1, rank};
+    const mesh_write_extras x = {title, rank ? &ranks : NULL, NULL, rank ? 1 : 0, 0};
+    return write_file(path, format, m, &x, err, err_len);
+}
+
+int mesh_file_write_vtu(const char *path, const sfa_mesh_data *m, const char *title, const mesh_data_array *point_data,
+                        int npoint_data, const mesh_data_array *cell_data, int ncell_data, char *err, size_t err_len)
+{
+    if (mesh_format_of(path) != MESH_FORMAT_VTU) {
+        snprintf(err, err_len, "%s: point and cell data are written to .vtu files only", path ? path : "(null)");
         return -1;
     }
-    const mesh_write_extras x = {title, rank};
-    switch (format) {
-    case MESH_FORMAT_OBJ: obj_write(f, m, &x); break;
-    case MESH_FORMAT_OFF: off_write(f, m, &x); break;
-    case MESH_FORMAT_STL: stl_write(f, m, &x); break;
-    case MESH_FORMAT_PLY: ply_write(f, m, &x); break;
-    case MESH_FORMAT_MEDIT: medit_write(f, m, &x); break;
-    case MESH_FORMAT_VTK: vtk_write(f, m, &x); break;
-    case MESH_FORMAT_VTU: vtu_write(f, m, &x); break;
-    case MESH_FORMAT_UNKNOWN: break;
-    }
-    const int failed = ferror(f);
-    if (fclose(f) != 0 || failed) {
-        snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno ? errno : EIO));
+    if (npoint_data < 0 || ncell_data < 0 || (npoint_data > 0 && !point_data) || (ncell_data > 0 && !cell_data)) {
+        snprintf(err, err_len, "%s: bad list of point or cell data arrays", path);
         return -1;
     }
-    return 0;
+    if (arrays_ok(path, "point data", point_data, npoint_data, m->nverts, err, err_len) != 0 ||
+        arrays_ok(path, "cell data", cell_data, ncell_data, m->ntris, err, err_len) != 0)
+        return -1;
+    const mesh_write_extras x = {title, point_data, cell_data, npoint_data, ncell_data};
+    return write_file(path, MESH_FORMAT_VTU, m, &x, err, err_len);
 }

@@ -66,6 +66,22 @@ int mesh_file_parse(const char *name, char *data, size_t size, sfa_mesh_data *ou
 int mesh_file_write(const char *path, const sfa_mesh_data *m, const char *title, const int32_t *rank, char *err,
                     size_t err_len);
 
+/* A named array of point data (one tuple per vertex) or cell data (one per triangle) for
+ * .vtu files: `ncomp` values per tuple, `values[ncomp*i+c]`, of the given type. */
+typedef enum { MESH_ARRAY_FLOAT64, MESH_ARRAY_INT32 } mesh_array_type;
+typedef struct {
+    const char *name; /* unique among the point (or cell) arrays; no '"', '<', '>', '&' */
+    mesh_array_type type;
+    int32_t ncomp;    /* >= 1 */
+    const void *values; /* double or int32_t, ncomp*nverts (or ncomp*ntris) of them */
+} mesh_data_array;
+
+/* mesh_file_write to a .vtu with any number of point and cell data arrays (the format
+ * that carries them; a path of another extension is an error). Returns 0, or -1 with a
+ * message in `err` (a bad or repeated array name, ncomp < 1, or the system's reason). */
+int mesh_file_write_vtu(const char *path, const sfa_mesh_data *m, const char *title, const mesh_data_array *point_data,
+                        int npoint_data, const mesh_data_array *cell_data, int ncell_data, char *err, size_t err_len);
+
 #ifdef __cplusplus
 }
 #endif

@@ -267,7 +267,7 @@ int mesh_write_obj(const char *path, const sfa_mesh_data *m, const char *comment
         snprintf(err, err_len, "%s: cannot write: %s", path, strerror(errno));
         return -1;
     }
-    const mesh_write_extras x = {comment, NULL};
+    const mesh_write_extras x = {comment, NULL, NULL, 0, 0};
     obj_write(f, m, &x);
     const int failed = ferror(f);
     if (fclose(f) != 0 || failed) {

@@ -4,9 +4,10 @@
  * ParaView's default) or appended raw binary (header_type UInt32 or UInt64, either byte
  * order). Triangles (cell type 5) make the mesh, polygons (7) and quads (9) are
  * fan-triangulated, vertices and lines (1 to 4) are read past, any other cell is an
- * error; point and cell data are not read. Compressed data and base64 appended data are
- * not read (an error says so): the tool never writes them. Only the tags that
- * matter are looked for, not a general XML parse: the files are machine-written. */
+ * error; point and cell data are not read (the writer writes them for ParaView; the mesh
+ * is what the tool reads back). Compressed data and base64 appended data are not read (an
+ * error says so): the tool never writes them. Only the tags that matter are looked for,
+ * not a general XML parse: the files are machine-written. */
 #include "format_io.h"
 
 #include <stdlib.h>
@@ -384,61 +385,118 @@ int vtu_parse(char *data, size_t size, mesh_builder *b, read_context *c)
     return rc;
 }
 
-static void put_le(FILE *f, uint64_t bits, int n)
+/* Little-endian bytes, gathered before fwrite: one call per value cost more than the
+ * formatting of the ASCII files this replaced. Byte by byte from the value, so the file is
+ * little-endian (as its byte_order says) whatever the machine's own order. */
+typedef struct {
+    FILE *f;
+    size_t used;
+    unsigned char bytes[1 << 15];
+} le_out;
+
+static void put_le(le_out *o, uint64_t bits, int n)
 {
-    unsigned char p[8];
+    if (o->used + 8 > sizeof o->bytes) {
+        fwrite(o->bytes, 1, o->used, o->f);
+        o->used = 0;
+    }
     for (int k = 0; k < n; ++k)
-        p[k] = (unsigned char)(bits >> (8 * k));
-    fwrite(p, 1, (size_t)n, f);
+        o->bytes[o->used++] = (unsigned char)(bits >> (8 * k));
+}
+
+static void put_f64(le_out *o, double v)
+{
+    uint64_t bits;
+    memcpy(&bits, &v, sizeof bits);
+    put_le(o, bits, 8);
+}
+
+static uint64_t value_size(const mesh_data_array *a) { return a->type == MESH_ARRAY_FLOAT64 ? 8 : 4; }
+
+/* The DataArray elements of point or cell data; `offset` runs on through the appended
+ * data, each array taking its 8-byte size and `tuples` * ncomp values. */
+static void data_tags(FILE *f, const char *element, const mesh_data_array *a, int n, uint64_t tuples,
+                      uint64_t *offset)
+{
+    if (n == 0)
+        return;
+    fprintf(f, "      <%s>\n", element);
+    for (int i = 0; i < n; ++i) {
+        fprintf(f,
+                "        <DataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\" format=\"appended\" "
+                "offset=\"%llu\"/>\n",
+                a[i].type == MESH_ARRAY_FLOAT64 ? "Float64" : "Int32", a[i].name, (int)a[i].ncomp,
+                (unsigned long long)*offset);
+        *offset += 8 + tuples * (uint64_t)a[i].ncomp * value_size(&a[i]);
+    }
+    fprintf(f, "      </%s>\n", element);
+}
+
+static void data_values(le_out *o, const mesh_data_array *a, int n, uint64_t tuples)
+{
+    for (int i = 0; i < n; ++i) {
+        const uint64_t count = tuples * (uint64_t)a[i].ncomp;
+        put_le(o, count * value_size(&a[i]), 8);
+        if (a[i].type == MESH_ARRAY_FLOAT64)
+            for (uint64_t k = 0; k < count; ++k)
+                put_f64(o, ((const double *)a[i].values)[k]);
+        else
+            for (uint64_t k = 0; k < count; ++k)
+                put_le(o, (uint32_t)((const int32_t *)a[i].values)[k], 4);
+    }
 }
 
 /* Binary appended raw, little-endian, header_type UInt64: exact doubles, compact, and
- * ParaView's own layout. Points Float64, connectivity and offsets Int64 (no limit on the
- * cell count), types UInt8; the feature rank, if given, as point data Int32. */
+ * ParaView's own layout. Points Float64; connectivity and offsets Int32, or Int64 when the
+ * offsets outgrow Int32 (more than 715 million triangles); types UInt8; then the point
+ * and cell data arrays given, Float64 or Int32. */
 void vtu_write(FILE *f, const sfa_mesh_data *m, const mesh_write_extras *x)
 {
+    static const mesh_write_extras none = {NULL, NULL, NULL, 0, 0};
+    if (!x)
+        x = &none;
     const uint64_t nv = (uint64_t)m->nverts, nt = (uint64_t)m->ntris;
-    const uint64_t points = 0, conn = points + 8 + 24 * nv, offs = conn + 8 + 24 * nt, types = offs + 8 + 8 * nt,
-                   rank = types + 8 + nt;
+    const int wide = 3 * nt > INT32_MAX;
+    const uint64_t isize = wide ? 8 : 4;
+    const uint64_t points = 0, conn = points + 8 + 24 * nv, offs = conn + 8 + 3 * isize * nt,
+                   types = offs + 8 + isize * nt;
+    uint64_t offset = types + 8 + nt;
     fputs("<?xml version=\"1.0\"?>\n", f);
-    if (x && x->title && !strstr(x->title, "--") && !strpbrk(x->title, "<>&"))
+    if (x->title && !strstr(x->title, "--") && !strpbrk(x->title, "<>&"))
         fprintf(f, "<!-- %s -->\n", x->title);
     fprintf(f,
             "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
             "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n",
             m->nverts, m->ntris);
-    if (x && x->rank)
-        fprintf(f,
-                "      <PointData Scalars=\"rank\">\n        <DataArray type=\"Int32\" Name=\"rank\" "
-                "format=\"appended\" offset=\"%llu\"/>\n      </PointData>\n",
-                (unsigned long long)rank);
+    data_tags(f, "PointData", x->point_data, x->npoint_data, nv, &offset);
+    data_tags(f, "CellData", x->cell_data, x->ncell_data, nt, &offset);
+    const char *itype = wide ? "Int64" : "Int32";
     fprintf(f,
             "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"appended\" "
             "offset=\"%llu\"/>\n      </Points>\n      <Cells>\n"
-            "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"appended\" offset=\"%llu\"/>\n"
-            "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"appended\" offset=\"%llu\"/>\n"
+            "        <DataArray type=\"%s\" Name=\"connectivity\" format=\"appended\" offset=\"%llu\"/>\n"
+            "        <DataArray type=\"%s\" Name=\"offsets\" format=\"appended\" offset=\"%llu\"/>\n"
             "        <DataArray type=\"UInt8\" Name=\"types\" format=\"appended\" offset=\"%llu\"/>\n"
             "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n  <AppendedData encoding=\"raw\">\n   _",
-            (unsigned long long)points, (unsigned long long)conn, (unsigned long long)offs, (unsigned long long)types);
-    put_le(f, 24 * nv, 8);
-    for (uint64_t i = 0; i < 3 * nv; ++i) {
-        uint64_t bits;
-        memcpy(&bits, &m->xyz[i], sizeof bits);
-        put_le(f, bits, 8);
-    }
-    put_le(f, 24 * nt, 8);
+            (unsigned long long)points, itype, (unsigned long long)conn, itype, (unsigned long long)offs,
+            (unsigned long long)types);
+    le_out o;
+    o.f = f;
+    o.used = 0;
+    put_le(&o, 24 * nv, 8);
+    for (uint64_t i = 0; i < 3 * nv; ++i)
+        put_f64(&o, m->xyz[i]);
+    put_le(&o, 3 * isize * nt, 8);
     for (uint64_t i = 0; i < 3 * nt; ++i)
-        put_le(f, (uint64_t)(int64_t)m->tris[i], 8);
-    put_le(f, 8 * nt, 8);
+        put_le(&o, (uint64_t)(int64_t)m->tris[i], (int)isize);
+    put_le(&o, isize * nt, 8);
     for (uint64_t t = 1; t <= nt; ++t)
-        put_le(f, 3 * t, 8);
-    put_le(f, nt, 8);
+        put_le(&o, 3 * t, (int)isize);
+    put_le(&o, nt, 8);
     for (uint64_t t = 0; t < nt; ++t)
-        put_le(f, 5, 1); /* VTK_TRIANGLE */
-    if (x && x->rank) {
-        put_le(f, 4 * nv, 8);
-        for (uint64_t i = 0; i < nv; ++i)
-            put_le(f, (uint32_t)x->rank[i], 4);
-    }
+        put_le(&o, 5, 1); /* VTK_TRIANGLE */
+    data_values(&o, x->point_data, x->npoint_data, nv);
+    data_values(&o, x->cell_data, x->ncell_data, nt);
+    fwrite(o.bytes, 1, o.used, f);
     fputs("\n  </AppendedData>\n</VTKFile>\n", f);
 }

@@ -4,7 +4,8 @@
 # period; the full runs are `make bench`): they finish, keep the volume within 0.5 %, never
 # fold the surface (no two neighbouring triangles' normals more than 150 degrees apart, no
 # two triangles crossing at any row of the table), and write a VTK time series ParaView
-# can open. Needs the tool built (`make`).
+# can open: binary appended .vtu steps with the point data rank, component and velocity,
+# and a .pvd of increasing times. Needs the tool built (`make`).
 # Ends with "cli: N passed, M failed" and a non-zero status if anything failed.
 set -u
 cd "$(dirname "$0")/../.." || exit 1
@@ -32,6 +33,24 @@ check "enright: volume within 0.5 %, no fold" summary_ok "$work/enright.txt"
 check "enright: the time series lists 4 saved steps" \
   sh -c "[ \$(grep -c '<DataSet ' '$work/enright/surface.pvd') -eq 4 ]"
 check "enright: each step is a VTK unstructured grid" grep -q 'UnstructuredGrid' "$work/enright/surface_0003.vtu"
+# Binary appended, not ASCII: the XML part says so and no array is inline text.
+step="$work/enright/surface_0003.vtu"
+check "enright: the steps are binary appended raw" \
+  sh -c "grep -aq '<AppendedData encoding=\"raw\">' '$step' && ! grep -aq 'format=\"ascii\"' '$step' &&
+         ! grep -aq 'format=\"binary\"' '$step'"
+for array in 'Int32" Name="rank" NumberOfComponents="1"' 'Int32" Name="component" NumberOfComponents="1"' \
+             'Float64" Name="velocity" NumberOfComponents="3"'; do
+  check "enright: point data $array" \
+    awk -v a="$array" '/<PointData>/ { p = 1 } /<\/PointData>/ { p = 0 } p && index($0, a) { f = 1 } END { exit !f }' "$step"
+done
+got=$("$tool" info "$step" 2>&1 | awk 'NR == 1 { print $2, $4 }')
+check "enright: info reads a step back, as the file says ('$got')" \
+  [ "$got" = "$(sed -n 's/.*<Piece NumberOfPoints="\([0-9]*\)" NumberOfCells="\([0-9]*\)".*/\1 \2/p' "$step")" ]
+check "enright: the collection's times increase from 0, each with its file" \
+  awk -F'"' '/<DataSet / { n++; t = $2 + 0; f = $8
+                            if ((n == 1 && t != 0) || (n > 1 && t <= last) || f != sprintf("surface_%04d.vtu", n - 1)) bad = 1
+                            last = t }
+             END { exit bad || n != 4 }' "$work/enright/surface.pvd"
 
 check "vortex --period 2 (coarse, 60 steps) exits 0" \
   sh -c "'$tool' vortex --period 2 --resolution 10 --steps 60 --report-every 20 --json >'$work/vortex.txt'"
