@@ -393,32 +393,6 @@ static feature_curves curves_of(const sfa_surface *s)
     return f;
 }
 
-/* The share of triangles with every angle in [theta_s, theta_l] (the paper's 15 and 160). */
-static double share_of_good_triangles(const sfa_surface *s)
-{
-    sfa_mesh_data m = read_back(s);
-    int32_t good = 0;
-    for (int32_t t = 0; t < m.ntris; ++t) {
-        int ok = 1;
-        for (int k = 0; k < 3; ++k) {
-            const double *a = m.xyz + 3 * m.tris[3 * t + k], *b = m.xyz + 3 * m.tris[3 * t + (k + 1) % 3],
-                         *c = m.xyz + 3 * m.tris[3 * t + (k + 2) % 3];
-            double u[3], w[3];
-            for (int i = 0; i < 3; ++i) {
-                u[i] = b[i] - a[i];
-                w[i] = c[i] - a[i];
-            }
-            const double cross[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-            const double angle = atan2(sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]),
-                                       u[0] * w[0] + u[1] * w[1] + u[2] * w[2]) * 180 / 3.14159265358979323846;
-            ok = ok && angle >= 15 && angle <= 160;
-        }
-        good += ok;
-    }
-    const double share = (double)good / m.ntris;
-    mesh_free(&m);
-    return share;
-}
 
 /* The number of corners of `a` that `b` has within `distance` of theirs. */
 static int32_t corners_within(const feature_curves *a, const feature_curves *b, double distance)

@@ -167,32 +167,6 @@ static void input_has_exactly_the_parts_features(void **state)
     mesh_free(&m);
 }
 
-static double share_of_good_triangles(const sfa_surface *s)
-{
-    sfa_mesh_data m = read_back(s);
-    int32_t good = 0;
-    for (int32_t t = 0; t < m.ntris; ++t) {
-        int ok = 1;
-        for (int k = 0; k < 3; ++k) {
-            const double *a = m.xyz + 3 * m.tris[3 * t + k], *b = m.xyz + 3 * m.tris[3 * t + (k + 1) % 3],
-                         *c = m.xyz + 3 * m.tris[3 * t + (k + 2) % 3];
-            double u[3], v[3], uv = 0, uu = 0, vv = 0;
-            for (int i = 0; i < 3; ++i) {
-                u[i] = b[i] - a[i];
-                v[i] = c[i] - a[i];
-                uv += u[i] * v[i];
-                uu += u[i] * u[i];
-                vv += v[i] * v[i];
-            }
-            const double degrees = acos(uv / sqrt(uu * vv)) * 180 / 3.14159265358979323846;
-            ok = ok && degrees >= 15 && degrees <= 160;
-        }
-        good += ok;
-    }
-    const double share = m.ntris ? (double)good / m.ntris : 0;
-    mesh_free(&m);
-    return share;
-}
 
 /* What the demo does (three sfa_adapt calls at edge length 0.08): the features stay
  * exactly the part's, the volume stays to round-off, and the long thin triangles of the

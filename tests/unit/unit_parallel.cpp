@@ -34,21 +34,26 @@ int threads_of_a_call()
     return seen;
 }
 
+// The CPUs the process may run on now, and a set of the first of them alone.
+void cpus_now_and_the_first(cpu_set_t &all, cpu_set_t &one)
+{
+    assert_int_equal(sched_getaffinity(0, sizeof all, &all), 0);
+    int first = 0;
+    while (!CPU_ISSET(first, &all))
+        ++first;
+    CPU_ZERO(&one);
+    CPU_SET(first, &one);
+}
+
 void narrowing_the_cpus_after_start_narrows_the_threads(void **)
 {
     unsetenv("OMP_NUM_THREADS");
-    cpu_set_t all;
-    assert_int_equal(sched_getaffinity(0, sizeof all, &all), 0);
+    cpu_set_t all, one;
+    cpus_now_and_the_first(all, one);
     if (CPU_COUNT(&all) < 2 || omp_get_max_threads() < 2) {
         skip(); // one CPU: nothing to narrow
         return;
     }
-    int first = 0;
-    while (!CPU_ISSET(first, &all))
-        ++first;
-    cpu_set_t one;
-    CPU_ZERO(&one);
-    CPU_SET(first, &one);
     assert_int_equal(sched_setaffinity(0, sizeof one, &one), 0);
     const int narrowed = threads_of_a_call();
     assert_int_equal(sched_setaffinity(0, sizeof all, &all), 0);
@@ -58,14 +63,8 @@ void narrowing_the_cpus_after_start_narrows_the_threads(void **)
 
 void omp_num_threads_is_kept_when_set(void **)
 {
-    cpu_set_t all;
-    assert_int_equal(sched_getaffinity(0, sizeof all, &all), 0);
-    int first = 0;
-    while (!CPU_ISSET(first, &all))
-        ++first;
-    cpu_set_t one;
-    CPU_ZERO(&one);
-    CPU_SET(first, &one);
+    cpu_set_t all, one;
+    cpus_now_and_the_first(all, one);
     setenv("OMP_NUM_THREADS", "2", 1);
     assert_int_equal(sched_setaffinity(0, sizeof one, &one), 0);
     const int chosen = default_threads();

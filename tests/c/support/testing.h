@@ -152,6 +152,34 @@ static inline sfa_mesh_data read_back(const sfa_surface *s)
     return m;
 }
 
+/* The share of triangles with every angle in [theta_s, theta_l] (the paper's 15 and 160
+ * degrees); 0 without triangles. */
+static inline double share_of_good_triangles(const sfa_surface *s)
+{
+    sfa_mesh_data m = read_back(s);
+    int32_t good = 0;
+    for (int32_t t = 0; t < m.ntris; ++t) {
+        int ok = 1;
+        for (int k = 0; k < 3; ++k) {
+            const double *a = m.xyz + 3 * m.tris[3 * t + k], *b = m.xyz + 3 * m.tris[3 * t + (k + 1) % 3],
+                         *c = m.xyz + 3 * m.tris[3 * t + (k + 2) % 3];
+            double u[3], w[3];
+            for (int i = 0; i < 3; ++i) {
+                u[i] = b[i] - a[i];
+                w[i] = c[i] - a[i];
+            }
+            const double cross[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+            const double angle = atan2(sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]),
+                                       u[0] * w[0] + u[1] * w[1] + u[2] * w[2]) * 180 / 3.14159265358979323846;
+            ok = ok && angle >= 15 && angle <= 160;
+        }
+        good += ok;
+    }
+    const double share = m.ntris ? (double)good / m.ntris : 0;
+    mesh_free(&m);
+    return share;
+}
+
 #ifndef SFA_NO_ALLOC_HOOK
 #include "alloc_hook/alloc_hook.h"
 
