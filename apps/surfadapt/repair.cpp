@@ -56,12 +56,17 @@ bool inside_or_on(const Point2 &p, const Point2 &a, const Point2 &b, const Point
 constexpr int32_t most_clipped_corners = 4096;
 
 // Cuts the polygon into triangles in its corners' order (so the orientation is kept), in
-// the plane its Newell normal is most nearly perpendicular to. A polygon that crosses itself
-// (no ear can be cut) is fanned from where clipping stopped; `simple` is then false.
+// the plane its Newell normal is most nearly perpendicular to. The fan from the first
+// corner, which is how every reader of the tool takes a polygon, is kept where it is sound
+// (every triangle turns the polygon's way, none has zero area): repair changes only what is
+// wrong, and two polygons that share a diagonal's ends keep the file's choice. Otherwise
+// ears are clipped; `clipped` is then true. A polygon that crosses itself (no ear can be
+// cut) is fanned from where clipping stopped; `simple` is then false.
 void triangulate(const std::vector<double> &xyz, const int32_t *corner, int32_t n, std::vector<Tri> &out,
-                 bool &simple)
+                 bool &clipped, bool &simple)
 {
     simple = true;
+    clipped = false;
     Point normal{0, 0, 0};
     for (int32_t i = 0; i < n; ++i) {
         const Point p = point(xyz, corner[i]), q = point(xyz, corner[(i + 1) % n]);
@@ -80,6 +85,15 @@ void triangulate(const std::vector<double> &xyz, const int32_t *corner, int32_t 
     for (int32_t i = 0; i < n; ++i)
         p[i] = {xyz[3 * corner[i] + u], mirror * xyz[3 * corner[i] + v]};
 
+    bool fan_sound = true;
+    for (int32_t i = 1; i + 1 < n && fan_sound; ++i)
+        fan_sound = turn(p[0], p[i], p[i + 1]) > 0 && !zero_area(xyz, {corner[0], corner[i], corner[i + 1]});
+    if (fan_sound) {
+        for (int32_t i = 1; i + 1 < n; ++i)
+            out.push_back({corner[0], corner[i], corner[i + 1]});
+        return;
+    }
+    clipped = true;
     std::vector<int32_t> left(static_cast<size_t>(n));
     std::iota(left.begin(), left.end(), 0);
     while (left.size() > 3 && n <= most_clipped_corners) {
@@ -194,7 +208,7 @@ int32_t components(const std::vector<Tri> &across, std::vector<int32_t> &compone
 // shared edge in the same direction; where that is impossible the component is counted as
 // non-orientable and left as the search made it. Of the two orientations the one that
 // turns fewer triangles is kept.
-void orient(std::vector<Tri> &tris, const std::vector<Tri> &across, RepairReport &report)
+void orient(std::vector<Tri> &tris, std::vector<Tri> &original, const std::vector<Tri> &across, RepairReport &report)
 {
     std::vector<int32_t> component;
     const int32_t count = components(across, component);
@@ -232,6 +246,7 @@ void orient(std::vector<Tri> &tris, const std::vector<Tri> &across, RepairReport
         for (const int32_t t : member)
             if ((flip[t] == 1) != invert) {
                 turn_round(tris[t]);
+                turn_round(original[t]);
                 ++report.triangles_flipped;
             }
         if (!orientable)
@@ -241,8 +256,12 @@ void orient(std::vector<Tri> &tris, const std::vector<Tri> &across, RepairReport
 
 // Gives each extra fan around a vertex (triangles that meet there but are not joined
 // through the vertex's edges) a copy of the vertex.
-void split_bowties(std::vector<double> &xyz, std::vector<Tri> &tris, const std::vector<Tri> &across,
-                   RepairReport &report)
+// Each fan takes, if it can, the vertex the file gave its corner (`original`, before the
+// merge of coincident vertices): a merged vertex whose fans come apart again was two
+// vertices that only touched, so the split gives each its own number back and neither the
+// merge nor the split is reported. Fans no file vertex is left for get a new copy.
+void split_bowties(std::vector<double> &xyz, std::vector<Tri> &tris, const std::vector<Tri> &original,
+                   const std::vector<Tri> &across, RepairReport &report)
 {
     const auto nverts = static_cast<int32_t>(xyz.size() / 3);
     // Corners of each vertex: (triangle, position in it), grouped by vertex.
@@ -257,19 +276,22 @@ void split_bowties(std::vector<double> &xyz, std::vector<Tri> &tris, const std::
         for (int k = 0; k < 3; ++k)
             corners[fill[tris[t][k]]++] = {static_cast<int32_t>(t), k};
 
-    std::vector<int32_t> fan(tris.size(), -1), stack;
+    std::vector<int32_t> fan(tris.size(), -1), stack, claimed;
     for (int32_t v = 0; v < nverts; ++v) {
         int32_t fans = 0;
+        claimed.clear();
+        const auto claim = [&claimed](int32_t w) {
+            if (std::find(claimed.begin(), claimed.end(), w) != claimed.end())
+                return false;
+            claimed.push_back(w);
+            return true;
+        };
+        // A first pass only counts: a vertex of one fan keeps its number.
         for (int32_t c = start[v]; c < start[v + 1]; ++c) {
             const int32_t seed = corners[c].first;
             if (fan[seed] >= 0)
                 continue;
             // This fan's triangles: joined across the two sides at v (sides k and k + 2).
-            int32_t copy = v;
-            if (fans > 0) {
-                copy = static_cast<int32_t>(xyz.size() / 3);
-                xyz.insert(xyz.end(), {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]});
-            }
             fan[seed] = fans;
             stack.assign(1, seed);
             while (!stack.empty()) {
@@ -284,17 +306,36 @@ void split_bowties(std::vector<double> &xyz, std::vector<Tri> &tris, const std::
                     }
                 }
             }
-            if (fans > 0)
-                ++report.bowties_split;
             ++fans;
-            // Renamed after the search, which looks for v in the triangles it reaches.
-            if (copy != v)
-                for (int32_t d = start[v]; d < start[v + 1]; ++d)
-                    if (fan[corners[d].first] == fans - 1)
-                        tris[corners[d].first][corners[d].second] = copy;
         }
-        for (int32_t c = start[v]; c < start[v + 1]; ++c)
-            fan[corners[c].first] = -1;
+        // Then each fan is numbered: the file's vertex at its seed corner if still free, else v,
+        // else a new copy. Renamed after all searches, which look for v in the triangles.
+        std::vector<int32_t> number(static_cast<size_t>(fans), -1);
+        for (int32_t c = start[v]; c < start[v + 1] && fans > 1; ++c) {
+            const int32_t f = fan[corners[c].first];
+            if (number[f] < 0 && claim(original[corners[c].first][corners[c].second]))
+                number[f] = original[corners[c].first][corners[c].second];
+        }
+        for (int32_t f = 0; f < fans && fans > 1; ++f) {
+            if (number[f] >= 0) {
+                if (number[f] != v)
+                    --report.vertices_merged; // a merge undone
+                continue;
+            }
+            if (claim(v)) {
+                number[f] = v;
+                continue;
+            }
+            number[f] = static_cast<int32_t>(xyz.size() / 3);
+            xyz.insert(xyz.end(), {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]});
+            ++report.bowties_split;
+        }
+        for (int32_t c = start[v]; c < start[v + 1]; ++c) {
+            const auto [t, k] = corners[c];
+            if (fans > 1)
+                tris[t][k] = number[fan[t]];
+            fan[t] = -1;
+        }
     }
 }
 
@@ -331,7 +372,7 @@ void turn_outward(const std::vector<double> &xyz, std::vector<Tri> &tris, const 
 
 int32_t RepairReport::changes() const
 {
-    return faces_out_of_range + vertices_merged + polygons_triangulated + degenerate_dropped + duplicates_dropped +
+    return faces_out_of_range + vertices_merged + polygons_clipped + degenerate_dropped + duplicates_dropped +
            triangles_flipped + components_turned_outward + edges_with_many_faces + bowties_split +
            unreferenced_dropped;
 }
@@ -351,8 +392,8 @@ std::vector<std::string> RepairReport::lines() const
         "dropped # faces that use vertices the file does not have", "");
     say(vertices_merged, "merged # vertex into an earlier one at exactly its position",
         "merged # vertices into earlier ones at exactly their positions", "");
-    say(polygons_triangulated, "triangulated # polygon of more than 3 corners", "triangulated # polygons of more than 3 corners",
-        " (ear clipping in each polygon's plane)");
+    say(polygons_clipped, "triangulated # polygon by ear clipping", "triangulated # polygons by ear clipping",
+        " (fanned from the first corner, as read, they fold over or have a zero-area triangle)");
     say(polygons_not_simple, "fanned # polygon that crosses itself", "fanned # polygons that cross themselves",
         " (no ear clipping can cut them; check them)");
     say(degenerate_dropped, "dropped # degenerate triangle", "dropped # degenerate triangles",
@@ -399,7 +440,8 @@ RepairReport repair_mesh(const PolygonMesh &in, TriangleSoup &out)
             }
     }
 
-    std::vector<Tri> tris;
+    // Triangles on the file's vertices; `tris` below are the same on the merged ones.
+    std::vector<Tri> original;
     std::vector<int32_t> corner;
     for (int32_t f = 0; f < in.faces(); ++f) {
         const int32_t begin = in.face_start[f], end = in.face_start[f + 1];
@@ -408,7 +450,7 @@ RepairReport repair_mesh(const PolygonMesh &in, TriangleSoup &out)
         for (int32_t i = begin; i < end; ++i) {
             in_range = in_range && in.indices[i] >= 0 && in.indices[i] < nverts;
             if (in_range)
-                corner.push_back(same[in.indices[i]]);
+                corner.push_back(in.indices[i]);
         }
         if (!in_range) {
             ++report.faces_out_of_range;
@@ -419,20 +461,22 @@ RepairReport repair_mesh(const PolygonMesh &in, TriangleSoup &out)
             continue;
         }
         if (corner.size() == 3) {
-            tris.push_back({corner[0], corner[1], corner[2]});
+            original.push_back({corner[0], corner[1], corner[2]});
             continue;
         }
-        bool simple = true;
-        triangulate(out.xyz, corner.data(), static_cast<int32_t>(corner.size()), tris, simple);
-        ++report.polygons_triangulated;
+        bool clipped = false, simple = true;
+        triangulate(out.xyz, corner.data(), static_cast<int32_t>(corner.size()), original, clipped, simple);
+        report.polygons_clipped += clipped ? 1 : 0;
         report.polygons_not_simple += simple ? 0 : 1;
     }
 
-    // Degenerate and duplicate triangles.
+    // Degenerate and duplicate triangles, on the merged vertices.
+    std::vector<Tri> tris;
     {
-        std::vector<Tri> kept;
+        std::vector<Tri> kept, kept_original;
         std::vector<std::pair<Tri, int32_t>> sorted;
-        for (const Tri &t : tris) {
+        for (const Tri &o : original) {
+            const Tri t{same[o[0]], same[o[1]], same[o[2]]};
             if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || zero_area(out.xyz, t)) {
                 ++report.degenerate_dropped;
                 continue;
@@ -441,6 +485,7 @@ RepairReport repair_mesh(const PolygonMesh &in, TriangleSoup &out)
             std::sort(key.begin(), key.end());
             sorted.emplace_back(key, static_cast<int32_t>(kept.size()));
             kept.push_back(t);
+            kept_original.push_back(o);
         }
         std::sort(sorted.begin(), sorted.end());
         std::vector<char> drop(kept.size(), 0);
@@ -449,17 +494,19 @@ RepairReport repair_mesh(const PolygonMesh &in, TriangleSoup &out)
                 drop[sorted[i].second] = 1;
                 ++report.duplicates_dropped;
             }
-        tris.clear();
+        original.clear();
         for (size_t t = 0; t < kept.size(); ++t)
-            if (!drop[t])
+            if (!drop[t]) {
                 tris.push_back(kept[t]);
+                original.push_back(kept_original[t]);
+            }
     }
 
     std::vector<Tri> across = neighbours(tris, report.edges_with_many_faces);
-    orient(tris, across, report);
+    orient(tris, original, across, report);
     int32_t same_edges_with_many = 0;
     across = neighbours(tris, same_edges_with_many); // turning a triangle round renumbers its sides
-    split_bowties(out.xyz, tris, across, report);
+    split_bowties(out.xyz, tris, original, across, report);
     across = neighbours(tris, report.edges_with_many_faces_left);
     report.edges_with_many_faces -= report.edges_with_many_faces_left;
     turn_outward(out.xyz, tris, across, report);

@@ -21,7 +21,7 @@ struct PolygonMesh {
 struct RepairReport {
     int32_t faces_out_of_range = 0;        // a face using a vertex that does not exist: dropped
     int32_t vertices_merged = 0;           // vertices at exactly the position of an earlier one
-    int32_t polygons_triangulated = 0;     // polygons of more than 3 corners, by ear clipping
+    int32_t polygons_clipped = 0;          // polygons whose fan folds over or has zero area: ear clipped
     int32_t polygons_not_simple = 0;       // of those, polygons no ear clipping can cut (they cross themselves): fanned
     int32_t degenerate_dropped = 0;        // a repeated corner, or zero area (collinear corners)
     int32_t duplicates_dropped = 0;        // the same three vertices as an earlier triangle
