@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Every pair of overlapping boxes, each once: the broad phase of the self-intersection
 // count and of collision-safe motion. Boxes of up to a few cells go into the uniform grid
-// (spatial_grid.hpp); a box larger than that (a long triangle among short ones, a vertex
-// thrown far in one step) would be entered in the cube of its size in cells, millions
-// for one sliver, so it is compared with every other box instead. Time and memory then
+// (spatial_grid.hpp); a box larger than that (large_span cells on an axis: a long triangle
+// among short ones, a vertex thrown far in one step) would be entered in the cube of its
+// size in cells, millions for one sliver, so it is compared with every other box instead. Time and memory then
 // stay linear in the boxes, plus the number of large boxes times all boxes.
 #pragma once
 
@@ -28,7 +28,6 @@ inline bool boxes_overlap(const Box &a, const Box &b)
 template <class Visit>
 void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit &&visit)
 {
-    constexpr double large_span = 16; // cells along an axis that make a box large
     const int32_t n = static_cast<int32_t>(boxes.size());
     std::vector<int32_t> small, large;
     std::vector<char> is_large(static_cast<size_t>(n), 0);

@@ -133,7 +133,9 @@ const std::vector<int32_t> &CrossingGuard::index_faces(const TriMesh &mesh, cons
     for (const std::array<Vec3, 2> &box : boxes_)
         origin = origin.cwiseMin(box[0]);
     // Cells of twice the mean edge: a face's box covers one to a few cells, a cell holds
-    // about ten faces.
+    // about ten faces. A face far larger than that (a corner pulled out hundreds of edges)
+    // the grid keeps apart, compared with every query, rather than entering it in the cube
+    // of its extent in cells (spatial_grid.hpp; issue 18: 645 MB for one such corner).
     double cell_size = n > 0 ? 2 * edge_sum / (3.0 * n) : 1;
     if (!(cell_size > 0))
         cell_size = 1;

@@ -14,10 +14,17 @@
 // entered after that are chained in a hashed table of their own, leaving the sorted runs as
 // they are.
 //
-// A query visits every cell its box covers, clamped to the cells that hold entries: its
-// cost grows with the number of those cells, the cube of the box's extent in cells, empty
-// or not, and nothing caps it. A box that spans many cells (a long edge among short ones)
-// makes an expensive query and, entered, as many entries as cells.
+// A query visits every cell its box covers, clamped to the cells that hold entries.
+//
+// Large boxes are kept apart (as box_pairs.hpp does for the pair sweep): a thing whose box
+// spans more than large_span + 1 cells on an axis (a long triangle among short ones, a
+// vertex thrown far in one step, a corner pulled out hundreds of edges) would be entered in
+// the cube of its extent in cells, millions of entries for one sliver, and a query box that
+// large would visit as many cells, empty or not. Such a thing is stored once, with its
+// cells, and every query compares it with its own cells; such a query compares itself with
+// every thing instead of walking cells. Memory then grows with the things and the entries
+// of the small ones alone (at most (large_span + 2)^3 each), and a query costs at most that
+// many cells or the number of things.
 #pragma once
 
 #include "mesh/parallel.hpp"
@@ -65,6 +72,28 @@ struct CellFrame {
     }
 };
 
+// Boxes of more than this many cells on an axis are large: kept out of the grid's cells and
+// compared with everything instead (here and in box_pairs.hpp).
+constexpr double large_span = 16;
+
+// Whether a box from cell `first` to cell `last` is large: a box of at most large_span cells
+// in extent covers at most large_span + 1 cells on an axis, however its ends round, so a
+// box box_pairs.hpp enters in the grid is never kept apart by it.
+inline bool spans_many_cells(const GridCell &first, const GridCell &last)
+{
+    constexpr int64_t most = static_cast<int64_t>(large_span) + 1;
+    return last[0] - first[0] > most || last[1] - first[1] > most || last[2] - first[2] > most;
+}
+
+// Whether two cell ranges share a cell.
+inline bool cells_meet(const GridCell &first, const GridCell &last, const std::array<GridCell, 2> &span)
+{
+    for (int a = 0; a < 3; ++a)
+        if (span[0][a] > last[a] || first[a] > span[1][a] || span[0][a] > span[1][a])
+            return false;
+    return true;
+}
+
 // Axis by axis: std::array's == becomes a call to memcmp, too slow for an inner loop.
 inline bool same_cell(const GridCell &a, const GridCell &b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
 
@@ -92,11 +121,14 @@ public:
     const CellFrame &frame() const { return frame_; }
     // Whether build has been called: only then can things be added.
     bool built() const { return !added_head_.empty(); }
-    bool empty() const { return sorted_size_ == 0 && added_.empty(); }
+    bool empty() const { return sorted_size_ == 0 && large_.empty() && added_things_.empty(); }
+    // The entries in cells, built and added: what the grid's memory grows with.
+    size_t entry_count() const { return sorted_size_ + added_.size(); }
 
     // Replaces the contents by `count` things: thing m, of box box_of(m) ({lo, hi}), is
     // entered as item_of(m, first) in every cell its box covers, `first` being the cell of
-    // lo. In a cell, entries come in the order of m. Both are called in parallel.
+    // lo, unless the box spans many cells (spans_many_cells): then it is kept apart, once.
+    // In a cell, entries come in the order of m. Both are called in parallel.
     template <class BoxOf, class ItemOf>
     void build(const CellFrame &frame, int32_t count, BoxOf &&box_of, ItemOf &&item_of);
 
@@ -104,16 +136,24 @@ public:
     template <class ItemOf>
     void add(const Vec3 &lo, const Vec3 &hi, ItemOf &&item_of);
 
-    // Calls visit(item, cell) for the entries of each cell from `first` to `last`: first
-    // the built ones, cells in the order of i, then j, then k, and in a cell in their order;
-    // then the added ones, cell by cell, latest first. Stops at the first visit that returns
-    // true, and returns whether one did.
+    // Calls visit(item, cell) for the things in the cells from `first` to `last`: first the
+    // built ones, cells in the order of i, then j, then k, and in a cell in their order;
+    // then the added ones, cell by cell, latest first. A thing is met in every cell of the
+    // range it covers, but a large thing, or any thing when the range itself spans many
+    // cells, is met once only, in the first cell of the range it covers
+    // (first_shared_cell(first, its first cell)): after the cells' entries for a large
+    // thing, in order of things, or, for a large range, in order of things alone. Callers
+    // that count a thing in that cell only (as every caller does) see each thing once
+    // either way. Stops at the first visit that returns true, and returns whether one did.
     template <class Visit>
     bool any_in_cells(const GridCell &first, const GridCell &last, Visit &&visit) const;
-    // The same for the built entries alone, calling visit(item). Densely numbered, the cells
+    // The same for the built things alone, calling visit(item). Densely numbered, the cells
     // of a column are one run of entries, read in one loop (not one per cell, whose ends a
     // processor cannot foresee); and visit is called from one place only, so that the
-    // compiler can inline it.
+    // compiler can inline it. For a range spanning many cells, the entries are read in
+    // their stored order, each thing at its first entry: for things of one cell each (the
+    // points of the search for facing sheets) in a densely numbered grid, the same order as
+    // cell by cell.
     template <class Visit>
     bool any_built_in_cells(const GridCell &first, const GridCell &last, Visit &&visit) const;
 
@@ -122,15 +162,20 @@ public:
 
     size_t bucket_count() const { return bucket_start_.size() - 1; }
     // Calls visit(a, b, key) for every two built entries a and b, a before b, of one cell in
-    // the bucket; key is the cell's.
+    // the bucket; key is the cell's. Large things are in no bucket (box_pairs.hpp compares
+    // them with every box itself).
     template <class Visit>
     void for_each_pair_in_bucket(size_t bucket, Visit &&visit) const;
 
 private:
     struct Added {
-        Item item;
+        int32_t thing; // in added_things_
+        int32_t next;  // the next added entry in the same chain, or -1
         uint64_t key;
-        int32_t next; // the next added entry in the same chain, or -1
+    };
+    struct AddedThing {
+        Item item;
+        std::array<GridCell, 2> span;
     };
 
     static uint64_t hashed(uint64_t key, int shift) { return (key * 0x9E3779B97F4A7C15u) >> shift; } // Fibonacci
@@ -180,9 +225,14 @@ private:
     std::unique_ptr<Item[]> sorted_;
     size_t sorted_size_ = 0, sorted_room_ = 0;
     std::vector<uint64_t> sorted_key_;
-    std::vector<int32_t> owner_; // build's scratch: the thing of each sorted entry
+    std::vector<int32_t> owner_; // the thing of each sorted entry
+    std::vector<uint32_t> first_entry_; // a small built thing's first entry
+    std::vector<int32_t> large_; // the large built things, in increasing order
+    std::vector<Item> large_item_; // theirs
     std::vector<int32_t> added_head_; // by hashed cell key
-    std::vector<Added> added_;
+    std::vector<Added> added_; // entries of small added things
+    std::vector<AddedThing> added_things_; // every added thing once
+    std::vector<int32_t> added_large_; // the large ones among them
     std::vector<std::array<GridCell, 2>> spans_; // the cells of each built thing's box
 };
 
@@ -199,8 +249,18 @@ void SpatialGrid<Item>::build(const CellFrame &frame, int32_t count, BoxOf &&box
     }
     low_.fill(none_low);
     high_.fill(none_high);
-    for (const std::array<GridCell, 2> &span : spans_)
-        for (int a = 0; a < 3; ++a) {
+    large_.clear();
+    for (int32_t m = 0; m < count; ++m)
+        if (spans_many_cells(spans_[m][0], spans_[m][1]))
+            large_.push_back(m);
+    large_item_.resize(large_.size());
+    for (size_t l = 0; l < large_.size(); ++l)
+        large_item_[l] = item_of(large_[l], spans_[large_[l]][0]);
+    // The cells' entries are those of the small things.
+    const auto small = [&](int32_t m) { return !spans_many_cells(spans_[m][0], spans_[m][1]); };
+    for (int32_t m = 0; m < count; ++m)
+        if (const std::array<GridCell, 2> &span = spans_[m]; small(m))
+            for (int a = 0; a < 3; ++a) {
             low_[a] = std::min(low_[a], span[0][a]);
             high_[a] = std::max(high_[a], span[1][a]);
         }
@@ -228,24 +288,29 @@ void SpatialGrid<Item>::build(const CellFrame &frame, int32_t count, BoxOf &&box
     // end, the last thing first, so that a bucket's entries come in the order of things.
     bucket_start_.assign(buckets + 1, 0);
     size_t entries = 0;
-    for (const std::array<GridCell, 2> &span : spans_)
-        for_each_cell(span[0], span[1], [&](const GridCell &c) {
-            if (++entries > std::numeric_limits<uint32_t>::max())
-                throw std::bad_alloc(); // more entries than memory could hold
-            ++bucket_start_[bucket_of(c)];
-        });
+    for (int32_t m = 0; m < count; ++m)
+        if (small(m))
+            for_each_cell(spans_[m][0], spans_[m][1], [&](const GridCell &c) {
+                if (++entries > std::numeric_limits<uint32_t>::max())
+                    throw std::bad_alloc(); // more entries than memory could hold
+                ++bucket_start_[bucket_of(c)];
+            });
     for (size_t b = 1; b < buckets; ++b)
         bucket_start_[b] += bucket_start_[b - 1];
     bucket_start_[buckets] = static_cast<uint32_t>(entries);
     sorted_key_.resize(dense_ ? 0 : entries);
     owner_.resize(entries);
+    first_entry_.assign(count, 0);
     for (int32_t m = count - 1; m >= 0; --m)
-        for_each_cell(spans_[m][0], spans_[m][1], [&](const GridCell &c) {
-            const uint32_t e = --bucket_start_[bucket_of(c)];
-            owner_[e] = m;
-            if (!dense_)
-                sorted_key_[e] = cell_key(c);
-        });
+        if (small(m))
+            for_each_cell(spans_[m][0], spans_[m][1], [&](const GridCell &c) {
+                const uint32_t e = --bucket_start_[bucket_of(c)];
+                owner_[e] = m;
+                if (!dense_)
+                    sorted_key_[e] = cell_key(c);
+            });
+    for (size_t e = entries; e-- > 0;)
+        first_entry_[owner_[e]] = static_cast<uint32_t>(e);
     // Then the items, larger, in parallel.
     if (entries > sorted_room_) {
         sorted_.reset(new Item[entries]);
@@ -258,6 +323,8 @@ void SpatialGrid<Item>::build(const CellFrame &frame, int32_t count, BoxOf &&box
     added_shift_ = 64 - bits;
     added_head_.assign(size_t{1} << bits, -1);
     added_.clear();
+    added_things_.clear();
+    added_large_.clear();
     added_low_.fill(none_low);
     added_high_.fill(none_high);
 }
@@ -267,6 +334,12 @@ template <class ItemOf>
 void SpatialGrid<Item>::add(const Vec3 &lo, const Vec3 &hi, ItemOf &&item_of)
 {
     const GridCell first = frame_.cell_of(lo), last = frame_.cell_of(hi);
+    const int32_t thing = static_cast<int32_t>(added_things_.size());
+    added_things_.push_back({item_of(first), {first, last}});
+    if (spans_many_cells(first, last)) {
+        added_large_.push_back(thing);
+        return;
+    }
     for (int a = 0; a < 3; ++a) {
         added_low_[a] = std::min(added_low_[a], first[a]);
         added_high_[a] = std::max(added_high_[a], last[a]);
@@ -274,7 +347,7 @@ void SpatialGrid<Item>::add(const Vec3 &lo, const Vec3 &hi, ItemOf &&item_of)
     for_each_cell(first, last, [&](const GridCell &c) {
         const uint64_t key = cell_key(c);
         int32_t &head = added_head_[hashed(key, added_shift_)];
-        added_.push_back({item_of(first), key, head});
+        added_.push_back({thing, head, key});
         head = static_cast<int32_t>(added_.size() - 1);
     });
 }
@@ -283,6 +356,21 @@ template <class Item>
 template <class Visit>
 bool SpatialGrid<Item>::any_in_cells(const GridCell &first, const GridCell &last, Visit &&visit) const
 {
+    const auto once = [&](const Item &item, const std::array<GridCell, 2> &span) {
+        return cells_meet(first, last, span) && visit(item, first_shared_cell(first, span[0]));
+    };
+    if (spans_many_cells(first, last)) { // every thing, each once
+        for (size_t e = 0; e < sorted_size_; ++e)
+            if (first_entry_[owner_[e]] == e && once(sorted_[e], spans_[owner_[e]]))
+                return true;
+        for (size_t l = 0; l < large_.size(); ++l)
+            if (once(large_item_[l], spans_[large_[l]]))
+                return true;
+        for (size_t t = added_things_.size(); t-- > 0;)
+            if (once(added_things_[t].item, added_things_[t].span))
+                return true;
+        return false;
+    }
     GridCell a = first, b = last;
     clamp(a, b, low_, high_);
     for (int64_t i = a[0]; i <= b[0]; ++i)
@@ -297,8 +385,9 @@ bool SpatialGrid<Item>::any_in_cells(const GridCell &first, const GridCell &last
                         return true;
             }
         }
-    if (added_.empty())
-        return false;
+    for (size_t l = 0; l < large_.size(); ++l)
+        if (once(large_item_[l], spans_[large_[l]]))
+            return true;
     a = first;
     b = last;
     clamp(a, b, added_low_, added_high_);
@@ -308,9 +397,12 @@ bool SpatialGrid<Item>::any_in_cells(const GridCell &first, const GridCell &last
                 const GridCell c{i, j, k};
                 const uint64_t key = cell_key(c);
                 for (int32_t e = added_head_[hashed(key, added_shift_)]; e >= 0; e = added_[e].next)
-                    if (added_[e].key == key && visit(added_[e].item, c))
+                    if (added_[e].key == key && visit(added_things_[added_[e].thing].item, c))
                         return true;
             }
+    for (size_t l = added_large_.size(); l-- > 0;)
+        if (once(added_things_[added_large_[l]].item, added_things_[added_large_[l]].span))
+            return true;
     return false;
 }
 
@@ -318,6 +410,15 @@ template <class Item>
 template <class Visit>
 bool SpatialGrid<Item>::any_built_in_cells(const GridCell &first, const GridCell &last, Visit &&visit) const
 {
+    if (spans_many_cells(first, last)) { // every thing, each once
+        for (size_t e = 0; e < sorted_size_; ++e)
+            if (first_entry_[owner_[e]] == e && cells_meet(first, last, spans_[owner_[e]]) && visit(sorted_[e]))
+                return true;
+        for (size_t l = 0; l < large_.size(); ++l)
+            if (cells_meet(first, last, spans_[large_[l]]) && visit(large_item_[l]))
+                return true;
+        return false;
+    }
     GridCell a = first, b = last;
     clamp(a, b, low_, high_);
     for (int64_t i = a[0]; i <= b[0]; ++i)
@@ -334,6 +435,9 @@ bool SpatialGrid<Item>::any_built_in_cells(const GridCell &first, const GridCell
                         return true;
             }
         }
+    for (size_t l = 0; l < large_.size(); ++l)
+        if (cells_meet(first, last, spans_[large_[l]]) && visit(large_item_[l]))
+            return true;
     return false;
 }
 

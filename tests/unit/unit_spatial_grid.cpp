@@ -4,7 +4,8 @@
 // added alike; and a query meets the points of its cells in the order of the cells and of
 // the points. On random boxes in a compact box (the cells numbered densely), on boxes far
 // apart (the cells hashed, some 2^21 cells apart, so that their keys coincide), on large
-// boxes crowding few buckets, and on boxes that all lie in one cell.
+// boxes crowding few buckets, on boxes that all lie in one cell, and with boxes too large
+// to enter in their cells, kept apart.
 #include "geometry/spatial_grid.hpp"
 
 #include <algorithm>
@@ -162,6 +163,42 @@ void boxes_in_one_cell_pair_up_as_all_pairs_find(void **)
     check_pairs(random_boxes(80, 0.4, 0.5, 4), CellFrame{Vec3::Zero(), 1.0});
 }
 
+// Issue 18: a 100 x 100 grid with one corner pulled out 600 edges made the crossing guard
+// enter the corner's faces in the cube of their extent in cells (645 MB; farther, memory
+// ran out). Large boxes are kept apart: the entries are those of the small boxes alone, and
+// queries, small and large, built and added, still meet every overlapping box once.
+void large_boxes_are_kept_apart_and_still_met(void **)
+{
+    const CellFrame cells{Vec3::Zero(), 0.1};
+    std::vector<Box> boxes = random_boxes(400, 1.0, 0.2, 7); // up to 3 cells a side
+    // Boxes of 600 to 6000 cells on a side, one of them degenerate (a segment), and one of
+    // 18 cells (just large) and one of 17 (just small) on one axis.
+    boxes.push_back({Vec3(0.5, 0.5, 0.5), Vec3(60, 61, 62)});
+    boxes.push_back({Vec3(-600, 0.3, 0.2), Vec3(0.4, 0.3, 0.25)});
+    boxes.push_back({Vec3(0.05, 0.05, 0.05), Vec3(1.85, 0.1, 0.1)});
+    boxes.push_back({Vec3(0.05, 0.05, 0.05), Vec3(1.75, 0.1, 0.1)});
+    const int32_t count = static_cast<int32_t>(boxes.size());
+    size_t small_entries = 0;
+    for (int32_t m = 0; m < count; ++m) {
+        const GridCell first = cells.cell_of(boxes[m][0]), last = cells.cell_of(boxes[m][1]);
+        if (!spans_many_cells(first, last))
+            small_entries += static_cast<size_t>((last[0] - first[0] + 1) * (last[1] - first[1] + 1) *
+                                                 (last[2] - first[2] + 1));
+    }
+    SpatialGrid<int32_t> grid;
+    grid.build(
+        cells, count, [&](int32_t m) { return boxes[m]; }, [](int32_t m, const GridCell &) { return m; });
+    assert_int_equal(grid.entry_count(), small_entries); // not the ~2e11 of the large boxes
+    assert_true(grid.entry_count() < 27 * static_cast<size_t>(count));
+    for (int32_t m = count - 4; m < count; ++m) // added alike
+        grid.add(boxes[m][0], boxes[m][1], [&](const GridCell &) { return m; });
+    assert_true(grid.entry_count() < 2 * 27 * static_cast<size_t>(count));
+
+    const Pairs expected = all_pairs(boxes);
+    for (const int32_t built : {count, count - 4, 0})
+        assert_same_pairs(pairs_by_query(boxes, cells, built), expected);
+}
+
 // The points a query meets, in order, against those in its cells sorted by cell (i, then
 // j, then k) and by number: the order the search for facing sheets depends on.
 void check_point_order(const std::vector<Vec3> &points, const CellFrame &cells, const std::vector<Box> &queries)
@@ -220,6 +257,15 @@ void a_query_meets_points_cell_by_cell_in_their_order(void **)
         queries.push_back({centre - half, centre + half});
     }
     check_point_order(points, CellFrame{Vec3::Zero(), 0.05}, queries); // densely numbered
+    // Queries of more than 18 cells on an axis read the entries rather than the cells: in
+    // a densely numbered grid (as the search for facing sheets always has), in the same
+    // order.
+    std::vector<Box> large_queries;
+    for (int q = 0; q < 10; ++q) {
+        const Vec3 centre = numbers.point(), half = numbers.point() * 0.3 + Vec3(0.5, 0, 0);
+        large_queries.push_back({centre - half, centre + half});
+    }
+    check_point_order(points, CellFrame{Vec3::Zero(), 0.05}, large_queries);
     // One point far out: the box of the points is then hashed.
     points.push_back(Vec3(1e6, -3e5, 2e6));
     queries.push_back({points.back() - Vec3::Constant(0.1), points.back() + Vec3::Constant(0.1)});
@@ -272,6 +318,7 @@ int main()
         cmocka_unit_test(boxes_far_apart_pair_up_as_all_pairs_find),
         cmocka_unit_test(large_boxes_in_few_buckets_pair_up_as_all_pairs_find),
         cmocka_unit_test(boxes_in_one_cell_pair_up_as_all_pairs_find),
+        cmocka_unit_test(large_boxes_are_kept_apart_and_still_met),
         cmocka_unit_test(a_query_meets_points_cell_by_cell_in_their_order),
         cmocka_unit_test(cells_of_non_finite_or_far_points_are_clamped),
     };
