@@ -254,12 +254,11 @@ void orient(std::vector<Tri> &tris, std::vector<Tri> &original, const std::vecto
     }
 }
 
-// Gives each extra fan around a vertex (triangles that meet there but are not joined
-// through the vertex's edges) a copy of the vertex.
-// Each fan takes, if it can, the vertex the file gave its corner (`original`, before the
-// merge of coincident vertices): a merged vertex whose fans come apart again was two
-// vertices that only touched, so the split gives each its own number back and neither the
-// merge nor the split is reported. Fans no file vertex is left for get a new copy.
+// Gives each fan around a vertex (triangles that meet there but are not joined through the
+// vertex's edges) a vertex of its own. A fan takes, if it can, the vertex the file gave its
+// corner (`original`, before the merge of coincident vertices): a merged vertex whose fans
+// come apart again was two vertices that only touched, so each gets its own number back and
+// neither the merge nor the split is reported. A fan no file vertex is left for gets a copy.
 void split_bowties(std::vector<double> &xyz, std::vector<Tri> &tris, const std::vector<Tri> &original,
                    const std::vector<Tri> &across, RepairReport &report)
 {
@@ -286,7 +285,7 @@ void split_bowties(std::vector<double> &xyz, std::vector<Tri> &tris, const std::
             claimed.push_back(w);
             return true;
         };
-        // A first pass only counts: a vertex of one fan keeps its number.
+        // First the fans, found by a search from each triangle not yet in one.
         for (int32_t c = start[v]; c < start[v + 1]; ++c) {
             const int32_t seed = corners[c].first;
             if (fan[seed] >= 0)
