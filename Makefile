@@ -8,6 +8,8 @@
 #   make check-python  the Python binding's tests alone (Debian's python3-numpy)
 #   make bench      benchmarks, one JSON line per case
 #   make fuzz       FUZZ_SECONDS=60 : each libFuzzer harness for that long (clang)
+#   make soak       SOAK_SECONDS=600 SOAK_SEED= : random surfaces through random calls, every
+#                   call checked, for that long on one core (tests/soak)
 #   make doc        the HTML reference (Doxygen; warnings are errors)
 #   make install    PREFIX=/usr/local DESTDIR= : header, libraries, .mod and its .f90, Python
 #                   module, tool, pkg-config, CMake
@@ -91,10 +93,19 @@ FUZZ_FLAGS   := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recove
 FUZZ_OBJS    := $(LIB_SRCS:%.cpp=build/fuzz/%.o)
 FUZZ_SECONDS ?= 60
 REPLAYS      := $(FUZZERS:%=build/san/tests/replay_%)
+# The soak (see "soak" below); `check` runs a short one.
+SOAK         := build/soak/soak
+SOAK_SECONDS ?= 600
+SOAK_SEED    ?= $(shell date +%s)
+# 40 surfaces of seed 1: about 15 s, clean today (tests/soak/FINDINGS.md lists the seeds
+# that are not, as tests/fuzz/open does for the fuzzers).
+SOAK_CHECK_SEED       := 1
+SOAK_CHECK_ITERATIONS := 40
 
 TEST_RPATH := -Wl,-rpath,'$$ORIGIN/../../lib'
 
-.PHONY: all deps deps-check deps-doc test check check-python demo bench doc install uninstall clean abi-check abi-baseline fuzz
+.PHONY: all deps deps-check deps-doc test check check-python demo bench doc install uninstall clean abi-check abi-baseline fuzz \
+        soak
 .DEFAULT_GOAL := all
 # Keep object files of pattern-built programs, so that rebuilds are incremental.
 .SECONDARY:
@@ -216,8 +227,9 @@ test: deps-check $(UNIT_TESTS) $(C_TESTS)
 	@OMP_WAIT_POLICY=$${OMP_WAIT_POLICY:-passive} scripts/run-tests.sh $(UNIT_TESTS) $(C_TESTS)
 
 check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE) $(C_EXAMPLE) $(PLUGIN_TEST) $(FIDELITY) $(SAN_TESTS) \
-       $(SAN_UNIT_TESTS) $(REPLAYS)
+       $(SAN_UNIT_TESTS) $(REPLAYS) $(SOAK)
 	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) "$(FORTRAN_EXAMPLE) 60" $(C_EXAMPLE) \
+	  "OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive $(SOAK) --iterations $(SOAK_CHECK_ITERATIONS) --seed $(SOAK_CHECK_SEED)" \
 	  tests/python/run.sh "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" \
 	  tests/install/test_install.sh tests/cli/test_features_cli.sh tests/cli/test_remesh_cli.sh tests/cli/test_flows_cli.sh \
 	  tests/cli/test_formats_cli.sh tests/cli/test_repair_cli.sh \
@@ -254,6 +266,21 @@ build/san/tests/replay_%: build/san/tests/fuzz/%.o build/san/tests/fuzz/replay.o
 	$(SAN_CXX) $(SAN_FLAGS) -o $@ $^ -lm
 fuzz: deps-check $(FUZZERS:%=build/fuzz/bin/%)
 	@scripts/fuzz.sh $(FUZZ_SECONDS) $(FUZZERS)
+
+# ------------------------------------------------------------------ soak
+# tests/soak: random valid surfaces through random motion, smoothing and adaptation, every
+# call checked (README, "Reliability"). `make soak SOAK_SECONDS=600` runs it that long on one
+# thread, niced, from SOAK_SEED (default: the time) and prints one JSON line; each finding
+# is printed with the seed that replays it (build/soak/soak --seed S --replay). `make check`
+# runs a fixed seed for a few seconds, so that the harness cannot rot.
+$(SOAK): tests/soak/soak.c tests/soak/surfaces.c tests/soak/surfaces.h tests/fuzz/contract.h $(TEST_SUPPORT_OBJ) \
+         $(LIB_SO) $(LIB_DEV)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Itests/c -Itests/fuzz -Iapps/surfadapt -o $@ $(filter %.c,$^) $(TEST_SUPPORT_OBJ) -Llib -lsurfadapt \
+	  -lm $(TEST_RPATH)
+soak: deps $(SOAK)
+	@OMP_NUM_THREADS=$${OMP_NUM_THREADS:-1} OMP_WAIT_POLICY=$${OMP_WAIT_POLICY:-passive} \
+	  nice -n 10 $(SOAK) --seconds $(SOAK_SECONDS) --seed $(SOAK_SEED)
 
 # ------------------------------------------------------------------ ABI
 # abidiff exit status is a bit set: 4 = the ABI changed (additions), 8 = an incompatible
