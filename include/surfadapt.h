@@ -18,7 +18,9 @@
  * paper: 4), or at once after a step the fold control had to cut to less than half,
  * sfa_adapt(), then read the new mesh (sfa_get_counts(), sfa_get_mesh()) and fields.
  * Smoothing and adaptation keep the volume of every closed component (each bubble, each
- * drop on its own) to round-off. The tool's
+ * drop on its own) to round-off, except where the correction that restores it would fold a
+ * triangle or carry one sheet through another, or the component has no smooth vertex:
+ * ::SFA_MEASURE_VOLUME_LEFT then says how far a volume was left. The tool's
  * `surfadapt enright` and `surfadapt vortex` follow exactly this schedule.
  *
  * @par Coordinates
@@ -199,8 +201,11 @@ enum sfa_param {
         an offset of its smooth vertices along their normals: no volume moves from one
         component to another, and open components are not corrected. 0: no correction, so
         that what the operations alone do to the volumes can be seen. Either way
-        ::SFA_MEASURE_VOLUME_CORRECTION reports how far the operations left a volume.
-        A flag, 0 or 1; default 1. */
+        ::SFA_MEASURE_VOLUME_CORRECTION reports how far the operations left a volume. The
+        correction is withheld from a component with no smooth vertex, or whose offset
+        would fold one of its triangles or carry it through another sheet (a thin slab, a
+        coarse cone after strong motion): it keeps its shape, and its volume change is
+        reported by ::SFA_MEASURE_VOLUME_LEFT. A flag, 0 or 1; default 1. */
     SFA_PARAM_VOLUME_CORRECTION = 21,
     /** How fast the desired edge length of a size field (sfa_set_size_field()) may change
         over the surface: before each sfa_adapt() the sizes are lowered where needed so
@@ -332,7 +337,14 @@ enum sfa_measure_quantity {
         what the mesh resolves, such as the satellite a pinch leaves between two ends.
         Their volume counts in ::SFA_MEASURE_TOPOLOGY_VOLUME_CHANGE, and their face-field
         integrals go with them. 0 before the first call. */
-    SFA_MEASURE_DROPS_REMOVED = 18
+    SFA_MEASURE_DROPS_REMOVED = 18,
+    /** The largest relative volume change |dV| / V of any closed component that the last
+        sfa_smooth() or sfa_adapt() call left: 0 when every volume was restored; the change
+        of a component the correction was withheld from (::SFA_PARAM_VOLUME_CORRECTION),
+        or, with the correction off, ::SFA_MEASURE_VOLUME_CORRECTION. A host that needs the
+        volumes exactly checks it after each call. 0 before the first such call; it needs
+        no mesh set. Dimensionless. */
+    SFA_MEASURE_VOLUME_LEFT = 19
 };
 
 /** One adaptive surface. Opaque; create with sfa_create(), free with sfa_destroy(). */
@@ -591,7 +603,8 @@ int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t, double dt
  * each sweep every closed component gets its own enclosed volume back by an offset of its
  * smooth vertices along their normals (a correction in the primary space), so smoothing
  * never changes a bubble's volume (::SFA_PARAM_VOLUME_CORRECTION switches the correction
- * off; ::SFA_MEASURE_VOLUME_CORRECTION tells how far the sweeps alone moved a volume).
+ * off; ::SFA_MEASURE_VOLUME_CORRECTION tells how far the sweeps alone moved a volume, and
+ * ::SFA_MEASURE_VOLUME_LEFT how far a volume stays moved where the correction is withheld).
  * Fields are interpolated at the new positions. Connectivity and vertex order do not
  * change, so host arrays stay valid.
  * @param s          the surface.
@@ -609,7 +622,8 @@ int sfa_smooth(sfa_surface *s, int32_t iterations);
  * contraction (§4.2), anisotropic edge flipping (§3.3) and two smoothing sweeps (as
  * sfa_smooth()), each after a fresh analysis. Every
  * threshold is a parameter (§4.3). Every closed component ends with the enclosed volume it
- * started with (to round-off), each on its own (::SFA_PARAM_VOLUME_CORRECTION). Corners never move; ridge vertices stay on their ridge
+ * started with (to round-off), each on its own (::SFA_PARAM_VOLUME_CORRECTION; where the
+ * correction is withheld, ::SFA_MEASURE_VOLUME_LEFT says by how much it did not). Corners never move; ridge vertices stay on their ridge
  * curves; boundaries stay boundaries. With ::SFA_PARAM_CROSSING_GUARD (on by default),
  * splits, contractions, flips and sweeps are kept from passing the surface through itself:
  * where a sheet is thinner than an edge (the filaments of a strong vortex), an operation

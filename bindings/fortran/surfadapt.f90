@@ -86,6 +86,7 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_MEASURE_PINCHES = 16
   integer(c_int), parameter, public :: SFA_MEASURE_TOPOLOGY_VOLUME_CHANGE = 17
   integer(c_int), parameter, public :: SFA_MEASURE_DROPS_REMOVED = 18
+  integer(c_int), parameter, public :: SFA_MEASURE_VOLUME_LEFT = 19
 
   public :: sfa_version_string, sfa_abi_version, sfa_version_number, sfa_status_string
   public :: sfa_create, sfa_destroy, sfa_last_error

@@ -113,6 +113,7 @@ class Measure(enum.IntEnum):
     PINCHES = 16
     TOPOLOGY_VOLUME_CHANGE = 17
     DROPS_REMOVED = 18
+    VOLUME_LEFT = 19
 
 
 # The header's names as well (SFA_OK, SFA_PARAM_EDGE_LENGTH, SFA_MEASURE_VOLUME, ...), so

@@ -158,8 +158,10 @@ std::vector<char> Adaptation::finish(AdaptCounts &counts)
         // The offsets move vertices along their normals, not over the surface: their fields
         // stay with them.
         PhaseClock clock(seconds_.smoothing);
-        counts.volume_correction = restore_enclosed_volumes(edit_, features_.ranks(), component_of_.labels(), volumes_,
-                                                            closed_, settings_.volume_correction);
+        const VolumeRestoration restored = restore_enclosed_volumes(
+            edit_, features_.ranks(), component_of_.labels(), volumes_, closed_, settings_.volume_correction);
+        counts.volume_correction = restored.largest_change;
+        counts.volume_left = restored.largest_left;
     }
     // New vertices and triangles were appended where they were made: put neighbours next
     // to each other in memory again, for every loop until the next adaptation. Only what

@@ -18,6 +18,8 @@ struct AdaptCounts {
     // The largest relative volume change of a closed component that the operations made
     // (restore_enclosed_volumes), and the correction took back if it was on.
     double volume_correction = 0;
+    // The largest relative volume change of a closed component the correction left.
+    double volume_left = 0;
     TopologyCounts topology; // the merges and pinches made first (SFA_PARAM_TOPOLOGY_CHANGE)
     PhaseTimes seconds;
 };

@@ -40,10 +40,11 @@ SmoothResult smooth_surface(TriMesh &mesh, SurfaceData &data, const SmoothSettin
         std::vector<Vec3> moved =
             smoothing_sweep(mesh, analysis, settings.denoise, settings.crossing_guard ? &guard : nullptr);
         edit.move(moved);
-        result.volume_correction =
-            std::max(result.volume_correction,
-                     restore_enclosed_volumes(edit, analysis.features.rank, components.of_vertex, volumes,
-                                              components.closed, settings.volume_correction));
+        const VolumeRestoration restored = restore_enclosed_volumes(
+            edit, analysis.features.rank, components.of_vertex, volumes, components.closed, settings.volume_correction);
+        result.volume_correction = std::max(result.volume_correction, restored.largest_change);
+        // Sweep after sweep, what one left uncorrected stays: the volumes are the call's.
+        result.volume_left = std::max(result.volume_left, restored.largest_left);
     }
     return result;
 }

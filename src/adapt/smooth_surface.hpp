@@ -17,6 +17,9 @@ struct SmoothResult {
     // The largest relative volume change of a closed component that a sweep made
     // (restore_enclosed_volumes), and the correction took back if it was on.
     double volume_correction = 0;
+    // The largest relative volume change of a closed component the correction left
+    // (restore_enclosed_volumes' largest_left), over the sweeps.
+    double volume_left = 0;
 };
 
 // `sweeps` times: the surface analysed, one sweep (smoothing_sweep) made through an edit

@@ -99,8 +99,9 @@ void keep_clear_of_other_sheets(const TriMesh &mesh, const std::vector<int32_t> 
 
 } // namespace
 
-double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank, const std::vector<int32_t> &label,
-                                const std::vector<double> &volume, const std::vector<char> &closed, bool correct)
+VolumeRestoration restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank,
+                                           const std::vector<int32_t> &label, const std::vector<double> &volume,
+                                           const std::vector<char> &closed, bool correct)
 {
     // Every smooth vertex moves by its component's offset o along its unit volume gradient
     // n_v; the six-fold volume of a component is then the cubic sum over its triangles of
@@ -127,18 +128,21 @@ double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank,
             return Eigen::Vector4d(det(p0, p1, p2), det(n0, p1, p2) + det(p0, n1, p2) + det(p0, p1, n2),
                                    det(p0, n1, n2) + det(n0, p1, n2) + det(n0, n1, p2), det(n0, n1, n2));
         });
-    double largest_change = 0;
-    std::vector<double> offset(count, 0);
+    VolumeRestoration result;
+    std::vector<double> offset(count, 0), change(count, 0);
     for (int32_t c = 0; c < count; ++c) {
         if (!closed[c])
             continue;
         const Eigen::Vector4d &k = coefficients[c];
-        largest_change = std::max(largest_change, std::abs(6 * volume[c] - k[0]) / std::abs(6 * volume[c]));
+        change[c] = std::abs(6 * volume[c] - k[0]) / std::abs(6 * volume[c]);
+        result.largest_change = std::max(result.largest_change, change[c]);
         if (correct && k[1] > 0) // else nothing can move: every vertex is a feature
             offset[c] = offset_for(k, 6 * volume[c]);
+        else
+            result.largest_left = std::max(result.largest_left, change[c]);
     }
     if (!correct || std::all_of(offset.begin(), offset.end(), [](double o) { return o == 0; }))
-        return largest_change;
+        return result;
     std::vector<Vec3> moved(n);
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < n; ++v)
@@ -162,8 +166,16 @@ double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank,
                 moved[v] = mesh.pos[v];
     }
     keep_clear_of_other_sheets(mesh, label, volume, moved);
+    // The components the safeguards above left as they were keep their change.
+    std::vector<char> corrected(count, 0);
+    for (int32_t v = 0; v < n; ++v)
+        if (moved[v] != mesh.pos[v])
+            corrected[label[v]] = 1;
+    for (int32_t c = 0; c < count; ++c)
+        if (offset[c] != 0 && !corrected[c])
+            result.largest_left = std::max(result.largest_left, change[c]);
     edit.offset(moved);
-    return largest_change;
+    return result;
 }
 
 } // namespace sfa

@@ -24,10 +24,18 @@ std::vector<double> component_volumes(const TriMesh &mesh, const std::vector<int
 // exact cubic in the offset, solved by Newton's method, so the result is exact to
 // round-off; a component whose offset would fold a triangle is left as it is. With
 // `correct` false, nothing moves. The vertices move through `edit` (MeshEdit::offset).
-// Returns the largest relative volume change |V - volume[c]| / |volume[c]| of a closed
-// component before the correction: how far the operations themselves came from keeping
-// the volume.
-double restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank, const std::vector<int32_t> &label,
-                                const std::vector<double> &volume, const std::vector<char> &closed, bool correct);
+// Returns, as relative volume changes |V - volume[c]| / |volume[c]| of closed components:
+struct VolumeRestoration {
+    // the largest before the correction: how far the operations themselves came from
+    // keeping the volume;
+    double largest_change = 0;
+    // the largest the correction left, where it was withheld: a component with no smooth
+    // vertex, whose offset would fold a triangle or carry it through another sheet (with
+    // `correct` false, every change is left).
+    double largest_left = 0;
+};
+VolumeRestoration restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank,
+                                           const std::vector<int32_t> &label, const std::vector<double> &volume,
+                                           const std::vector<char> &closed, bool correct);
 
 } // namespace sfa

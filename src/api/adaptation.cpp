@@ -84,6 +84,7 @@ SFA_EXPORT int sfa_smooth(sfa_surface *s, int32_t iterations)
         s->origins.after.swap(after);
         s->seconds_spent += result.seconds;
         s->volume_correction = result.volume_correction;
+        s->volume_left = result.volume_left;
     });
 }
 
@@ -117,6 +118,7 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
         std::swap(s->components, components);
         s->seconds_spent += counts.seconds;
         s->volume_correction = counts.volume_correction;
+        s->volume_left = counts.volume_left;
         s->topology = counts.topology;
     });
 }

@@ -31,10 +31,10 @@ SurfaceAnalysis current_analysis(const sfa_surface *s)
 
 void require_known_quantity(int quantity)
 {
-    if (quantity < SFA_MEASURE_VOLUME || quantity > SFA_MEASURE_DROPS_REMOVED) {
+    if (quantity < SFA_MEASURE_VOLUME || quantity > SFA_MEASURE_VOLUME_LEFT) {
         char message[120];
         std::snprintf(message, sizeof message, "unknown quantity %d (quantities are 0 to %d, enum sfa_measure_quantity)",
-                      quantity, SFA_MEASURE_DROPS_REMOVED);
+                      quantity, SFA_MEASURE_VOLUME_LEFT);
         fail(Status::argument, message);
     }
 }
@@ -53,6 +53,7 @@ bool call_measure(const sfa_surface *s, int quantity, double &value)
     case SFA_MEASURE_PINCHES: value = s->topology.pinches; return true;
     case SFA_MEASURE_TOPOLOGY_VOLUME_CHANGE: value = s->topology.volume_change; return true;
     case SFA_MEASURE_DROPS_REMOVED: value = s->topology.removals; return true;
+    case SFA_MEASURE_VOLUME_LEFT: value = s->volume_left; return true;
     default: return false;
     }
 }

@@ -49,6 +49,7 @@ struct sfa_surface {
     sfa::OriginsRecord origins;
     sfa::PhaseTimes seconds_spent; // by the successful sfa_smooth and sfa_adapt calls
     double volume_correction = 0;  // SFA_MEASURE_VOLUME_CORRECTION of the last of them
+    double volume_left = 0;        // SFA_MEASURE_VOLUME_LEFT of the last of them
     sfa::TopologyCounts topology;  // SFA_MEASURE_MERGES, _PINCHES, _TOPOLOGY_VOLUME_CHANGE of the last sfa_adapt
     // The vertices near a facing sheet (geometry/crossing_guard.hpp) as the last sfa_adapt
     // found them, for the sfa_smooth calls until the next; empty if the connectivity

@@ -226,7 +226,7 @@ static void bad_arguments_and_state(void **state)
     (void)state;
     sfa_surface *s = make_cube_surface();
     double v = 77;
-    const int unknown[] = {-1, SFA_MEASURE_DROPS_REMOVED + 1, 1000, INT32_MIN};
+    const int unknown[] = {-1, SFA_MEASURE_VOLUME_LEFT + 1, 1000, INT32_MIN};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; ++i) {
         assert_error(s, sfa_measure(s, unknown[i], &v), SFA_ERR_ARGUMENT, "");
         assert_true(v == 77);

@@ -169,6 +169,45 @@ static void jittered_box_keeps_corners_edges_planes_and_volume(void **state)
 }
 
 /* A field that is linear on a flat patch stays exactly linear at the moved vertices. */
+/* A correction the library withholds is never silent. A slab 0.023 thick between edges of
+ * 0.25 (denoised strongly, three sweeps): offsetting it back would carry one face through
+ * the other, so it keeps its shape and its 20 % volume change, and SFA_MEASURE_VOLUME_LEFT
+ * says exactly that much. The same slab between edges of 0.1 is corrected: nothing left.
+ * With the correction off, what is left is what the operations did. */
+static void a_withheld_volume_correction_is_reported(void **state)
+{
+    (void)state;
+    const double lo[3] = {0, 0, 0}, hi[3] = {1, 0.8, 0.023};
+    for (int n = 4; n <= 10; n += 6) {
+        sfa_mesh_data m = shape_box(n, lo, hi);
+        sfa_surface *s = surface_from(&m, 0, NULL, 0);
+        assert_non_null(s);
+        assert_ok(s, sfa_set_param(s, SFA_PARAM_DENOISE, 0.31));
+        const double v0 = measure(s, SFA_MEASURE_VOLUME);
+        assert_ok(s, sfa_smooth(s, 3));
+        const double change = fabs(measure(s, SFA_MEASURE_VOLUME) - v0) / v0, left = measure(s, SFA_MEASURE_VOLUME_LEFT);
+        print_message("slab of %d vertices: volume changed by %.3e, reported left %.3e\n", m.nverts, change, left);
+        if (n == 4) {
+            assert_true(change > 0.1);
+            assert_true(fabs(left - change) <= 1e-9 * change);
+        } else {
+            assert_true(change < 1e-12);
+            assert_true(left == 0);
+        }
+        sfa_destroy(s);
+        mesh_free(&m);
+    }
+    sfa_mesh_data m = shape_jittered_icosphere(3, 1, 0.3, 7);
+    sfa_surface *s = surface_from(&m, 0, NULL, 0);
+    assert_non_null(s);
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_VOLUME_CORRECTION, 0));
+    assert_ok(s, sfa_smooth(s, 1));
+    assert_true(measure(s, SFA_MEASURE_VOLUME_CORRECTION) > 0);
+    assert_true(measure(s, SFA_MEASURE_VOLUME_LEFT) == measure(s, SFA_MEASURE_VOLUME_CORRECTION));
+    sfa_destroy(s);
+    mesh_free(&m);
+}
+
 static void linear_field_stays_linear_on_a_flat_patch(void **state)
 {
     (void)state;
@@ -278,6 +317,7 @@ int main(void)
         cmocka_unit_test(jittered_sphere_gets_better_angles_and_keeps_volume_and_shape),
         cmocka_unit_test(jittered_box_keeps_corners_edges_planes_and_volume),
         cmocka_unit_test(denoising_removes_radial_noise_and_keeps_volume),
+        cmocka_unit_test(a_withheld_volume_correction_is_reported),
         cmocka_unit_test(linear_field_stays_linear_on_a_flat_patch),
         cmocka_unit_test(smoothing_is_deterministic_for_any_thread_count),
         cmocka_unit_test(nothing_lost_when_memory_runs_out),
