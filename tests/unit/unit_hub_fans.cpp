@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Tests of the angular index of a vertex's fan (geometry/fan_sectors.hpp) and of what it
+// is for (issue 18): the check that a contraction's faces pass through none around the
+// ends' neighbours makes O(valence) exact triangle tests, not O(valence^2), on a cone
+// whose apex and base centre neighbour every rim vertex.
+#include "adapt/contract.hpp"
+#include "geometry/fan_sectors.hpp"
+#include "geometry/triangle_intersection.hpp"
+#include "mesh/validate.hpp"
+#include "surfadapt.h"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstddef>
+#include <cstdint>
+#include <random>
+#include <setjmp.h>
+#include <set>
+#include <vector>
+
+extern "C" {
+#include <cmocka.h>
+}
+
+using namespace sfa;
+
+namespace {
+
+// A closed cone: the apex (0) over a rim of n vertices at height 0, closed by the rim's
+// centre (n + 1), both of valence n (as bench/bench_valence.c).
+void cone(int n, std::vector<double> &xyz, std::vector<int32_t> &tris, double height = 1)
+{
+    xyz = {0, 0, height};
+    for (int i = 0; i < n; ++i) {
+        const double a = 2 * 3.14159265358979323846 * i / n;
+        xyz.insert(xyz.end(), {std::cos(a), std::sin(a), 0});
+    }
+    xyz.insert(xyz.end(), {0, 0, 0});
+    tris.clear();
+    for (int i = 0; i < n; ++i) {
+        const int32_t a = 1 + i, b = 1 + (i + 1) % n;
+        tris.insert(tris.end(), {0, a, b, n + 1, b, a});
+    }
+}
+
+// Every face of the fan a random triangle meets is among the candidates, whenever the
+// index answers (apex of a steep and of a flat cone, base centre, triangles near the axis
+// and with a corner on it).
+void candidates_hold_every_face_met(void **)
+{
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> unit(-1.2, 1.2);
+    int answered = 0, met = 0;
+    for (double height : {1.0, 0.05}) {
+        std::vector<double> xyz;
+        std::vector<int32_t> tris;
+        cone(200, xyz, tris, height);
+        const TriMesh mesh = validated_mesh(
+            MeshInput{static_cast<int32_t>(xyz.size() / 3), xyz.data(), static_cast<int32_t>(tris.size() / 3),
+                      tris.data(), 0, false});
+        for (int32_t hub : {0, 201}) {
+            FanSectors fan;
+            assert_true(fan.build(mesh, hub));
+            for (int trial = 0; trial < 4000; ++trial) {
+                Vec3 p[3];
+                for (Vec3 &q : p)
+                    q = Vec3(unit(random), unit(random), unit(random) * height);
+                if (trial % 2 == 0)
+                    p[0] = Vec3(0, 0, trial % 4 == 0 ? 0.0 : -0.5); // a corner on the axis
+                else
+                    p[1] = p[0] + 0.05 * (p[1] - p[0]), p[2] = p[0] + 0.05 * (p[2] - p[0]); // small
+                std::set<int32_t> candidates;
+                if (!fan.for_each_candidate(p, [&](int32_t f) { candidates.insert(f); }))
+                    continue;
+                ++answered;
+                mesh.for_each_outgoing(hub, [&](int32_t h) {
+                    const Triangle &t = mesh.tri[TriMesh::face(h)];
+                    if (triangles_intersect(p[0], p[1], p[2], mesh.pos[t[0]], mesh.pos[t[1]], mesh.pos[t[2]])) {
+                        ++met;
+                        assert_true(candidates.count(TriMesh::face(h)) == 1);
+                    }
+                });
+            }
+        }
+    }
+    assert_true(answered > 8000); // the filter is used, not passed over
+    assert_true(met > 1000);      // and was tested where it matters
+}
+
+// sfa_adapt on the cone of valence 1000: about 5 n contraction checks, each of which read
+// the apex's and the base centre's whole fans before (27 n^2 = 2.7e7 triangle tests).
+void cone_clearance_tests_grow_linearly(void **)
+{
+    const int n = 1000;
+    std::vector<double> xyz;
+    std::vector<int32_t> tris;
+    cone(n, xyz, tris);
+    sfa_surface *s = nullptr;
+    assert_int_equal(sfa_create(&s), SFA_OK);
+    assert_int_equal(sfa_set_mesh(s, n + 2, xyz.data(), 2 * n, tris.data(), 0), SFA_OK);
+    const int64_t before = contraction_clearance_tests();
+    assert_int_equal(sfa_adapt(s), SFA_OK);
+    const int64_t tests = contraction_clearance_tests() - before;
+    print_message("%lld triangle tests for valence %d\n", static_cast<long long>(tests), n);
+    assert_true(tests > 0);
+    assert_true(tests < 5000 * n); // the few checks of contracting the apex itself still read its fan squared
+    sfa_destroy(s);
+}
+
+} // namespace
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(candidates_hold_every_face_met),
+        cmocka_unit_test(cone_clearance_tests_grow_linearly),
+    };
+    return cmocka_run_group_tests(tests, nullptr, nullptr);
+}
