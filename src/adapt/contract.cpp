@@ -146,7 +146,7 @@ size_t changed_limit(size_t faces) { return 8 + static_cast<size_t>(2 * std::sqr
 // the moved face's sectors are tested (fan_sectors.hpp: none that could meet it is left
 // out). The answer is that of testing every face around every neighbour.
 bool stays_clear_of_neighbours(const TriMesh &mesh, int32_t h, const Vec3 &merged, const HubFans &hubs,
-                               std::vector<int32_t> &nearby)
+                               std::vector<int32_t> &nearby, FanSectors &merged_fan)
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
     const auto corner = [&](int32_t v) { return v == a || v == b ? merged : mesh.pos[v]; };
@@ -171,34 +171,63 @@ bool stays_clear_of_neighbours(const TriMesh &mesh, int32_t h, const Vec3 &merge
     std::sort(nearby.begin() + first_hub, nearby.end());
     nearby.erase(std::unique(nearby.begin() + first_hub, nearby.end()), nearby.end());
 
-    int64_t tests = 0;
-    bool clear = true;
+    // The faces that move, after: the merged vertex's fan.
+    const int32_t first_moved = static_cast<int32_t>(nearby.size());
     mesh.for_each_face_around_edge(h, [&](int32_t f) {
         const Triangle &t = mesh.tri[f];
         const bool has_a = t[0] == a || t[1] == a || t[2] == a, has_b = t[0] == b || t[1] == b || t[2] == b;
-        if (!clear || (has_a && has_b))
-            return; // done, or dies with the edge
+        if (!(has_a && has_b)) // or it dies with the edge
+            nearby.push_back(f);
+    });
+    const int32_t moved = static_cast<int32_t>(nearby.size()) - first_moved;
+
+    int64_t tests = 0;
+    // True if moved face f would meet face e (which does not move unless it shares a vertex).
+    const auto meets = [&](int32_t f, int32_t e) {
+        const Triangle &t = mesh.tri[f], &u = mesh.tri[e];
+        bool shares = false; // a vertex with f (or is f itself)
+        for (int32_t x : t)
+            for (int32_t y : u)
+                shares = shares || same(x) == same(y);
+        if (shares)
+            return false;
+        ++tests;
+        return triangles_intersect(corner(t[0]), corner(t[1]), corner(t[2]), corner(u[0]), corner(u[1]),
+                                   corner(u[2]));
+    };
+    bool clear = true;
+    // The faces around the neighbours not indexed. Where the merged vertex has many faces
+    // (a vertex of high valence contracted), each face e is looked up in the merged fan's
+    // sectors, as a moved face is in an indexed neighbour's below: a face that has a or b
+    // shares the merged vertex with every moved face.
+    const bool by_sectors = moved >= min_indexed_valence && merged_fan.build_merged(mesh, h, merged);
+    for (int32_t k = 0; clear && k < first_hub; ++k) {
+        const int32_t e = nearby[k];
+        const Triangle &u = mesh.tri[e];
+        if (!by_sectors) {
+            for (int32_t m = first_moved; clear && m < first_moved + moved; ++m)
+                clear = !meets(nearby[m], e);
+            continue;
+        }
+        if (u[0] == a || u[0] == b || u[1] == a || u[1] == b || u[2] == a || u[2] == b)
+            continue;
+        const Vec3 q[3] = {mesh.pos[u[0]], mesh.pos[u[1]], mesh.pos[u[2]]};
+        if (!merged_fan.for_each_candidate(q, [&](int32_t f) { clear = clear && !meets(f, e); }))
+            for (int32_t m = first_moved; clear && m < first_moved + moved; ++m)
+                clear = !meets(nearby[m], e);
+    }
+    // The indexed neighbours' fans, for each moved face by its sectors.
+    for (int32_t m = first_moved; clear && m < first_moved + moved; ++m) {
+        const int32_t f = nearby[m];
+        const Triangle &t = mesh.tri[f];
         const Vec3 p[3] = {corner(t[0]), corner(t[1]), corner(t[2])};
-        const auto meets = [&](int32_t e) {
-            const Triangle &u = mesh.tri[e];
-            bool shares = false; // a vertex with f (or is f itself)
-            for (int32_t x : t)
-                for (int32_t y : u)
-                    shares = shares || same(x) == same(y);
-            if (shares)
-                return false;
-            ++tests;
-            return triangles_intersect(p[0], p[1], p[2], corner(u[0]), corner(u[1]), corner(u[2]));
-        };
-        for (int32_t k = 0; clear && k < first_hub; ++k)
-            clear = !meets(nearby[k]);
-        for (size_t k = first_hub; clear && k < nearby.size(); ++k) {
+        for (int32_t k = first_hub; clear && k < first_moved; ++k) {
             const int32_t w = nearby[k];
             if (t[0] == w || t[1] == w || t[2] == w)
                 continue; // every face around w shares w with f
             const auto around_w = [&](int32_t e) {
                 const Triangle &u = mesh.tri[e];
-                if ((u[0] == w || u[1] == w || u[2] == w) && meets(e))
+                if (clear && (u[0] == w || u[1] == w || u[2] == w) && meets(f, e))
                     clear = false;
             };
             const int32_t slot = indexed(w);
@@ -213,7 +242,7 @@ bool stays_clear_of_neighbours(const TriMesh &mesh, int32_t h, const Vec3 &merge
                 if (!is_dead_vertex(mesh, v))
                     mesh.for_each_outgoing(v, [&](int32_t g) { around_w(TriMesh::face(g)); });
         }
-    });
+    }
     clearance_tests.fetch_add(tests, std::memory_order_relaxed);
     return clear;
 }
@@ -294,13 +323,13 @@ bool merged_position(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32
 bool contraction_allowed(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h,
                          const RepairSettings &settings, const CarriedFeatures &features,
                          const CarriedConstraints &constraints, bool coarsens, const HubFans &hubs,
-                         std::vector<int32_t> &nearby, Vec3 &merged)
+                         std::vector<int32_t> &nearby, FanSectors &merged_fan, Vec3 &merged)
 {
     return wants_contraction(mesh, analysis, h, settings, coarsens) && collapse_keeps_manifold(mesh, h) &&
            merged_position(mesh, analysis, h, features, constraints,
                            settings.contract_short_ratio * settings.desired_length, merged) &&
            faces_survive(mesh, analysis, features, h, merged) &&
-           stays_clear_of_neighbours(mesh, h, merged, hubs, nearby);
+           stays_clear_of_neighbours(mesh, h, merged, hubs, nearby, merged_fan);
 }
 
 // The edge between a and b, in either direction, or -1.
@@ -341,10 +370,10 @@ public:
     Contraction(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings)
         : mesh_(context.edit.mesh()), analysis_(analysis), repair_(settings, context.size),
           features_(context.features), constraints_(context.constraints), guard_(context.guard),
-          nearby_(loop_threads())
+          nearby_(loop_threads()), merged_fans_(loop_threads())
     {
         // stays_clear_of_neighbours lists the fans of the neighbours of both ends that are
-        // not indexed: each thread's list is allocated for that here, so that none grows in
+        // not indexed, those neighbours that are, and the moved faces: each thread's list is allocated for that here, so that none grows in
         // a parallel loop (but where a fan of high valence could not be indexed).
         const int32_t nv = mesh_.num_vertices();
         std::vector<int32_t> valence(nv, 0);
@@ -355,7 +384,7 @@ public:
         const int32_t most_neighbours = nv > 0 ? *std::max_element(valence.begin(), valence.end()) + 1 : 0;
         for (std::vector<int32_t> &list : nearby_)
             list.reserve(2 * static_cast<size_t>(most_neighbours) *
-                         (std::min(most_neighbours, min_indexed_valence) + 1));
+                         (std::min(most_neighbours, min_indexed_valence) + 3));
         // The fans of high valence, indexed in parallel (each its own element).
         std::vector<int32_t> hubs;
         for (int32_t v = 0; v < nv; ++v)
@@ -400,7 +429,7 @@ public:
     {
         return contraction_allowed(mesh_, analysis_, h, repair_.at_edge(mesh_, h), features_, constraints_,
                                    shortness_applies(mesh_, h, features_, guard_), hubs_, nearby_[thread_index()],
-                                   plan.merged);
+                                   merged_fans_[thread_index()], plan.merged);
     }
     // Each contraction marks the merged vertex and its neighbours.
     bool may_have_changed(int32_t h, const ChangedVertices &changed) const
@@ -452,6 +481,7 @@ private:
     const CrossingGuard *guard_;
     HubFans hubs_;
     mutable std::vector<std::vector<int32_t>> nearby_; // scratch per thread
+    mutable std::vector<FanSectors> merged_fans_;     // scratch per thread
 };
 
 } // namespace

@@ -27,31 +27,65 @@ bool FanSectors::build(const TriMesh &mesh, int32_t w)
 {
     usable_ = false;
     hub_ = w;
-    phi_.clear();
     faces_.clear();
-    centre_ = mesh.pos[w];
-    Vec3 axis = Vec3::Zero();
+    links_.clear();
     bool closed = true;
     mesh.for_each_outgoing(w, [&](int32_t h) {
-        const int32_t f = TriMesh::face(h);
-        faces_.push_back(f);
-        const Triangle &t = mesh.tri[f];
-        axis += (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]);
+        faces_.push_back(TriMesh::face(h));
+        links_.push_back(mesh.pos[mesh.head(h)]);
         closed = closed && mesh.rotate_ccw(h) >= 0;
     });
-    if (!closed || faces_.size() < 3 || !(axis.norm() > 0))
+    return closed && index(mesh.pos[w]);
+}
+
+bool FanSectors::build_merged(const TriMesh &mesh, int32_t h, const Vec3 &merged)
+{
+    usable_ = false;
+    hub_ = -1;
+    faces_.clear();
+    links_.clear();
+    // Around each end from the edge on, counter-clockwise: the first and the last face have
+    // both ends and die; the last link vertex of one end's fan is the first of the other's.
+    bool closed = true;
+    for (const int32_t end : {mesh.tail(h), mesh.head(h)}) {
+        const int32_t other = end == mesh.tail(h) ? mesh.head(h) : mesh.tail(h);
+        int32_t g = mesh.halfedge(end, other);
+        if (g < 0)
+            return false;
+        for (g = mesh.rotate_ccw(g); closed && g >= 0 && mesh.head(g) != other; g = mesh.rotate_ccw(g)) {
+            const int32_t next = mesh.rotate_ccw(g);
+            closed = next >= 0;
+            if (closed && mesh.head(next) != other) {
+                faces_.push_back(TriMesh::face(g));
+                links_.push_back(mesh.pos[mesh.head(g)]);
+            }
+        }
+        closed = closed && g >= 0;
+    }
+    return closed && index(merged);
+}
+
+bool FanSectors::index(const Vec3 &centre)
+{
+    centre_ = centre;
+    phi_.clear();
+    const size_t m = faces_.size();
+    if (m < 3)
+        return false;
+    Vec3 axis = Vec3::Zero();
+    for (size_t k = 0; k < m; ++k)
+        axis += (links_[k] - centre_).cross(links_[(k + 1) % m] - centre_);
+    if (!(axis.norm() > 0))
         return false;
     axis.normalize();
     e1_ = std::abs(axis.x()) < 0.6 ? Vec3(1, 0, 0).cross(axis) : Vec3(0, 1, 0).cross(axis);
     e1_.normalize();
     e2_ = axis.cross(e1_);
     // The link vertices in the order of the faces: face i = (w, v_i, v_i+1).
-    const size_t m = faces_.size();
     std::vector<double> length(m + 1), radius(m + 1);
-    size_t i = 0;
     double pad = 0;
-    mesh.for_each_outgoing(w, [&](int32_t h) {
-        const Vec3 d = mesh.pos[mesh.head(h)] - centre_;
+    for (size_t i = 0; i < m; ++i) {
+        const Vec3 d = links_[i] - centre_;
         const double x = d.dot(e1_), y = d.dot(e2_), r = std::hypot(x, y);
         length[i] = d.norm();
         radius[i] = r;
@@ -63,8 +97,7 @@ bool FanSectors::build(const TriMesh &mesh, int32_t w)
             phi_.push_back(padded_angle(x, y, length[i], p));
             pad = std::max(pad, p);
         }
-        ++i;
-    });
+    }
     if (!(pad < 1e-6))
         return false;
     pad_ = 2 * pad;

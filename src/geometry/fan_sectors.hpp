@@ -30,6 +30,10 @@ public:
     // Indexes w's fan as it is now; false (and usable() false) where the fan is open, or
     // not star-shaped in projection.
     bool build(const TriMesh &mesh, int32_t w);
+    // Indexes the fan the merged vertex would have if h were contracted with it at
+    // `merged` (the faces around either end but the two of h's edge, as they are numbered
+    // now); false where either end is on the boundary or the fan is not star-shaped.
+    bool build_merged(const TriMesh &mesh, int32_t h, const Vec3 &merged);
     bool usable() const { return usable_; }
     int32_t hub() const { return hub_; }
     size_t size() const { return faces_.size(); }
@@ -68,6 +72,8 @@ public:
 private:
     // The angles of the projection of p seen from L(w), [from, to], padded.
     bool query_range(const Vec3 (&p)[3], double &from, double &to) const;
+    // Indexes faces_ (face i between links_[i] and links_[i + 1], cyclically) around centre.
+    bool index(const Vec3 &centre);
 
     bool usable_ = false;
     int32_t hub_ = -1;
@@ -76,6 +82,7 @@ private:
     double pad_ = 0;            // more than the rounding error of every angle of the fan
     std::vector<double> phi_;   // the link vertices' angles, unwrapped, increasing: 2 pi in all
     std::vector<int32_t> faces_; // face i between phi_[i] and phi_[i + 1]
+    std::vector<Vec3> links_;    // the link vertices' positions
 };
 
 } // namespace sfa
