@@ -4,12 +4,14 @@
 #include "adapt/size_field.hpp"
 #include "geometry/circle.hpp"
 #include "geometry/edge_neighbourhood.hpp"
+#include "geometry/fan_sectors.hpp"
 #include "geometry/local_fit.hpp"
 #include "geometry/quadric_error.hpp"
 #include "geometry/surface_side.hpp"
 #include "geometry/triangle_intersection.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace sfa {
@@ -109,43 +111,139 @@ bool faces_survive(const TriMesh &mesh, const SurfaceAnalysis &analysis, const C
     return ok;
 }
 
+// The exact triangle tests stays_clear_of_neighbours made (contraction_clearance_tests).
+std::atomic<int64_t> clearance_tests{0};
+
+// A vertex with at least this many faces has its fan indexed by angle (FanSectors) for
+// stays_clear_of_neighbours: below it, reading the fan costs less than looking it up.
+constexpr int32_t min_indexed_valence = 64;
+
+// The fans of the vertices of high valence, indexed at the start of a contraction pass
+// (issue 18: on a cone of n slivers, each of the O(n) contractions of the rim read the
+// apex's whole fan, O(n^2)). A contraction changes the fans of the neighbours of the
+// vertex it keeps: every changed face has that vertex as a corner, so each index keeps the
+// list of such vertices and the faces around them are tested as they are now; the index
+// is built anew when that list grows longer than about the square root of the fan (the
+// rebuilds and the list's reads then cost O(sqrt n) per contraction).
+struct HubFans {
+    std::vector<int32_t> slot;     // per vertex: its index in `fans`, or -1
+    std::vector<FanSectors> fans;
+    std::vector<std::vector<int32_t>> changed; // per index: vertices whose faces changed since
+};
+
+// The list of changed vertices after which a fan of `faces` faces is indexed anew.
+size_t changed_limit(size_t faces) { return 8 + static_cast<size_t>(2 * std::sqrt(static_cast<double>(faces))); }
+
 // True if no face around the merged vertex would pass through a face around the ends'
 // neighbours that it shares no vertex with. Where a sheet is thinner than an edge (the
 // filaments of the vortex flow), the other side of the sheet is that close, and a merged
 // vertex can land beyond it although every face keeps its own orientation. `nearby` is
 // scratch space, kept by the caller so that the candidates of a pass allocate nothing.
-bool stays_clear_of_neighbours(const TriMesh &mesh, int32_t h, const Vec3 &merged, std::vector<int32_t> &nearby)
+//
+// A face that shares a vertex with the moved face (one around a or b included: the merged
+// vertex) is not tested, so the fan of a neighbour that is a corner of the moved face is
+// skipped whole; the fans in `hubs` are read through their index, and only the faces in
+// the moved face's sectors are tested (fan_sectors.hpp: none that could meet it is left
+// out). The answer is that of testing every face around every neighbour.
+bool stays_clear_of_neighbours(const TriMesh &mesh, int32_t h, const Vec3 &merged, const HubFans &hubs,
+                               std::vector<int32_t> &nearby, FanSectors &merged_fan)
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
     const auto corner = [&](int32_t v) { return v == a || v == b ? merged : mesh.pos[v]; };
     const auto same = [&](int32_t v) { return v == a ? b : v; }; // a and b become one vertex
-    // The faces around the neighbours, each once (a face is around up to three of them).
+    const auto indexed = [&](int32_t w) { return hubs.slot.empty() ? -1 : hubs.slot[w]; };
+    // The faces around the neighbours not indexed, each once (a face is around up to three
+    // of them); the indexed neighbours apart.
     nearby.clear();
     for (int32_t end : {a, b})
         mesh.for_each_neighbour(end, [&](int32_t w, int32_t) {
-            mesh.for_each_outgoing(w, [&](int32_t g) { nearby.push_back(TriMesh::face(g)); });
+            if (w != a && w != b && indexed(w) < 0) // a's and b's faces all have the merged vertex
+                mesh.for_each_outgoing(w, [&](int32_t g) { nearby.push_back(TriMesh::face(g)); });
         });
     std::sort(nearby.begin(), nearby.end());
     nearby.erase(std::unique(nearby.begin(), nearby.end()), nearby.end());
-    bool clear = true;
+    const int32_t first_hub = static_cast<int32_t>(nearby.size());
+    for (int32_t end : {a, b})
+        mesh.for_each_neighbour(end, [&](int32_t w, int32_t) {
+            if (w != a && w != b && indexed(w) >= 0)
+                nearby.push_back(w);
+        });
+    std::sort(nearby.begin() + first_hub, nearby.end());
+    nearby.erase(std::unique(nearby.begin() + first_hub, nearby.end()), nearby.end());
+
+    // The faces that move, after: the merged vertex's fan.
+    const int32_t first_moved = static_cast<int32_t>(nearby.size());
     mesh.for_each_face_around_edge(h, [&](int32_t f) {
         const Triangle &t = mesh.tri[f];
         const bool has_a = t[0] == a || t[1] == a || t[2] == a, has_b = t[0] == b || t[1] == b || t[2] == b;
-        if (!clear || (has_a && has_b))
-            return; // done, or dies with the edge
-        const Vec3 p[3] = {corner(t[0]), corner(t[1]), corner(t[2])};
-        for (int32_t e : nearby) {
-            const Triangle &u = mesh.tri[e];
-            bool shares = false; // a vertex with f (or is f itself)
-            for (int32_t x : t)
-                for (int32_t y : u)
-                    shares = shares || same(x) == same(y);
-            if (!shares && triangles_intersect(p[0], p[1], p[2], corner(u[0]), corner(u[1]), corner(u[2]))) {
-                clear = false;
-                return;
-            }
-        }
+        if (!(has_a && has_b)) // or it dies with the edge
+            nearby.push_back(f);
     });
+    const int32_t moved = static_cast<int32_t>(nearby.size()) - first_moved;
+
+    int64_t tests = 0;
+    // True if moved face f would meet face e (which does not move unless it shares a vertex).
+    const auto meets = [&](int32_t f, int32_t e) {
+        const Triangle &t = mesh.tri[f], &u = mesh.tri[e];
+        bool shares = false; // a vertex with f (or is f itself)
+        for (int32_t x : t)
+            for (int32_t y : u)
+                shares = shares || same(x) == same(y);
+        if (shares)
+            return false;
+        ++tests;
+        return triangles_intersect(corner(t[0]), corner(t[1]), corner(t[2]), corner(u[0]), corner(u[1]),
+                                   corner(u[2]));
+    };
+    bool clear = true;
+    // The faces around the neighbours not indexed. Where the merged vertex has many faces
+    // (a vertex of high valence contracted), each face e is looked up in the merged fan's
+    // sectors, as a moved face is in an indexed neighbour's below: a face that has a or b
+    // shares the merged vertex with every moved face.
+    const bool by_sectors = moved >= min_indexed_valence && merged_fan.build_merged(mesh, h, merged);
+    for (int32_t k = 0; clear && k < first_hub; ++k) {
+        const int32_t e = nearby[k];
+        const Triangle &u = mesh.tri[e];
+        if (!by_sectors) {
+            for (int32_t m = first_moved; clear && m < first_moved + moved; ++m)
+                clear = !meets(nearby[m], e);
+            continue;
+        }
+        if (u[0] == a || u[0] == b || u[1] == a || u[1] == b || u[2] == a || u[2] == b)
+            continue;
+        const Vec3 q[3] = {mesh.pos[u[0]], mesh.pos[u[1]], mesh.pos[u[2]]};
+        if (!merged_fan.for_each_candidate(q, [&](int32_t f) { clear = clear && !meets(f, e); }))
+            for (int32_t m = first_moved; clear && m < first_moved + moved; ++m)
+                clear = !meets(nearby[m], e);
+    }
+    // The indexed neighbours' fans, for each moved face by its sectors.
+    for (int32_t m = first_moved; clear && m < first_moved + moved; ++m) {
+        const int32_t f = nearby[m];
+        const Triangle &t = mesh.tri[f];
+        const Vec3 p[3] = {corner(t[0]), corner(t[1]), corner(t[2])};
+        for (int32_t k = first_hub; clear && k < first_moved; ++k) {
+            const int32_t w = nearby[k];
+            if (t[0] == w || t[1] == w || t[2] == w)
+                continue; // every face around w shares w with f
+            const auto around_w = [&](int32_t e) {
+                const Triangle &u = mesh.tri[e];
+                if (clear && (u[0] == w || u[1] == w || u[2] == w) && meets(f, e))
+                    clear = false;
+            };
+            const int32_t slot = indexed(w);
+            // The faces around w no contraction changed, by their sectors (the index may
+            // also list faces that are now elsewhere or dead: around_w passes them by) ...
+            if (!hubs.fans[slot].for_each_candidate(p, around_w)) {
+                mesh.for_each_outgoing(w, [&](int32_t g) { around_w(TriMesh::face(g)); });
+                continue; // the filter could not tell: the whole fan
+            }
+            // ... and those that changed, around the vertices they have in common.
+            for (int32_t v : hubs.changed[slot])
+                if (!is_dead_vertex(mesh, v))
+                    mesh.for_each_outgoing(v, [&](int32_t g) { around_w(TriMesh::face(g)); });
+        }
+    }
+    clearance_tests.fetch_add(tests, std::memory_order_relaxed);
     return clear;
 }
 
@@ -224,14 +322,14 @@ bool merged_position(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32
 // it passes. `coarsens`: shortness_applies. `nearby`: scratch for stays_clear_of_neighbours.
 bool contraction_allowed(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h,
                          const RepairSettings &settings, const CarriedFeatures &features,
-                         const CarriedConstraints &constraints, bool coarsens, std::vector<int32_t> &nearby,
-                         Vec3 &merged)
+                         const CarriedConstraints &constraints, bool coarsens, const HubFans &hubs,
+                         std::vector<int32_t> &nearby, FanSectors &merged_fan, Vec3 &merged)
 {
     return wants_contraction(mesh, analysis, h, settings, coarsens) && collapse_keeps_manifold(mesh, h) &&
            merged_position(mesh, analysis, h, features, constraints,
                            settings.contract_short_ratio * settings.desired_length, merged) &&
            faces_survive(mesh, analysis, features, h, merged) &&
-           stays_clear_of_neighbours(mesh, h, merged, nearby);
+           stays_clear_of_neighbours(mesh, h, merged, hubs, nearby, merged_fan);
 }
 
 // The edge between a and b, in either direction, or -1.
@@ -272,19 +370,40 @@ public:
     Contraction(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings)
         : mesh_(context.edit.mesh()), analysis_(analysis), repair_(settings, context.size),
           features_(context.features), constraints_(context.constraints), guard_(context.guard),
-          nearby_(loop_threads())
+          nearby_(loop_threads()), merged_fans_(loop_threads())
     {
-        // stays_clear_of_neighbours lists at most every fan of the neighbours of both ends:
-        // each thread's list is allocated for that here, so that none grows in a parallel loop.
-        int32_t most_neighbours = 0;
-#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(max : most_neighbours)
-        for (int32_t v = 0; v < mesh_.num_vertices(); ++v) {
-            int32_t count = 0;
-            mesh_.for_each_neighbour(v, [&](int32_t, int32_t) { ++count; });
-            most_neighbours = std::max(most_neighbours, count);
-        }
+        // stays_clear_of_neighbours lists the fans of the neighbours of both ends that are
+        // not indexed, those neighbours that are, and the moved faces: each thread's list is allocated for that here, so that none grows in
+        // a parallel loop (but where a fan of high valence could not be indexed).
+        const int32_t nv = mesh_.num_vertices();
+        std::vector<int32_t> valence(nv, 0);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+        for (int32_t v = 0; v < nv; ++v)
+            if (!is_dead_vertex(mesh_, v))
+                mesh_.for_each_outgoing(v, [&](int32_t) { ++valence[v]; });
+        const int32_t most_neighbours = nv > 0 ? *std::max_element(valence.begin(), valence.end()) + 1 : 0;
         for (std::vector<int32_t> &list : nearby_)
-            list.reserve(2 * static_cast<size_t>(most_neighbours) * most_neighbours);
+            list.reserve(2 * static_cast<size_t>(most_neighbours) *
+                         (std::min(most_neighbours, min_indexed_valence) + 3));
+        // The fans of high valence, indexed in parallel (each its own element).
+        std::vector<int32_t> hubs;
+        for (int32_t v = 0; v < nv; ++v)
+            if (valence[v] >= min_indexed_valence)
+                hubs.push_back(v);
+        if (hubs.empty())
+            return;
+        std::vector<FanSectors> fans(hubs.size());
+        std::vector<char> usable(hubs.size(), 0);
+#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 1)
+        for (size_t k = 0; k < hubs.size(); ++k)
+            usable[k] = fans[k].build(mesh_, hubs[k]);
+        hubs_.slot.assign(nv, -1);
+        for (size_t k = 0; k < hubs.size(); ++k)
+            if (usable[k]) {
+                hubs_.slot[hubs[k]] = static_cast<int32_t>(hubs_.fans.size());
+                hubs_.fans.push_back(std::move(fans[k]));
+            }
+        hubs_.changed.resize(hubs_.fans.size());
     }
 
     bool wanted(int32_t h, double &order) const
@@ -309,8 +428,8 @@ public:
     bool plan(int32_t h, Plan &plan) const
     {
         return contraction_allowed(mesh_, analysis_, h, repair_.at_edge(mesh_, h), features_, constraints_,
-                                   shortness_applies(mesh_, h, features_, guard_), nearby_[thread_index()],
-                                   plan.merged);
+                                   shortness_applies(mesh_, h, features_, guard_), hubs_, nearby_[thread_index()],
+                                   merged_fans_[thread_index()], plan.merged);
     }
     // Each contraction marks the merged vertex and its neighbours.
     bool may_have_changed(int32_t h, const ChangedVertices &changed) const
@@ -321,21 +440,53 @@ public:
     {
         if (guard_ && merge_crosses(mesh_, h, plan.merged, *guard_))
             return false;
+        const int32_t gone = mesh_.tail(h), keep = mesh_.head(h);
         edit.collapse(h, plan.merged);
+        if (!hubs_.fans.empty())
+            update_hubs(gone, keep);
         return true;
     }
 
 private:
+    // After gone was contracted into keep (serial): the faces that changed all have keep as
+    // a corner. Keep's own fan is indexed anew, as is a neighbour's whose list grew long;
+    // an index that could not be made again is dropped (its fan is then read whole).
+    void update_hubs(int32_t gone, int32_t keep)
+    {
+        const auto rebuild = [&](int32_t v) {
+            const int32_t slot = hubs_.slot[v];
+            hubs_.changed[slot].clear();
+            if (!hubs_.fans[slot].build(mesh_, v))
+                hubs_.slot[v] = -1;
+        };
+        hubs_.slot[gone] = -1;
+        if (hubs_.slot[keep] >= 0)
+            rebuild(keep);
+        mesh_.for_each_neighbour(keep, [&](int32_t w, int32_t) {
+            const int32_t slot = hubs_.slot[w];
+            if (slot < 0)
+                return;
+            std::vector<int32_t> &changed = hubs_.changed[slot];
+            changed.push_back(keep);
+            if (changed.size() > changed_limit(hubs_.fans[slot].size()))
+                rebuild(w);
+        });
+    }
+
     const TriMesh &mesh_;
     const SurfaceAnalysis &analysis_;
     const LocalRepair repair_;
     const CarriedFeatures &features_;
     const CarriedConstraints &constraints_;
     const CrossingGuard *guard_;
+    HubFans hubs_;
     mutable std::vector<std::vector<int32_t>> nearby_; // scratch per thread
+    mutable std::vector<FanSectors> merged_fans_;     // scratch per thread
 };
 
 } // namespace
+
+int64_t contraction_clearance_tests() { return clearance_tests.load(std::memory_order_relaxed); }
 
 int32_t contraction_pass(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings)
 {

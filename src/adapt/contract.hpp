@@ -26,4 +26,9 @@ namespace sfa {
 // contractions.
 int32_t contraction_pass(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings);
 
+// The exact triangle tests made by the check that a contraction's faces pass through none
+// around the ends' neighbours, since the library was loaded (for tests: issue 18 made it
+// grow with the square of a vertex's valence).
+int64_t contraction_clearance_tests();
+
 } // namespace sfa
