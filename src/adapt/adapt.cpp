@@ -132,7 +132,7 @@ int32_t Adaptation::pass(AdaptCounts &counts)
     const int32_t splits = timed(seconds_.repair, [&] { return splitting_pass(context, geometry_, settings_.repair); });
     analyse_changed();
     const int32_t contractions = timed(seconds_.repair, [&] {
-        const int32_t made = contraction_pass(context, geometry_, settings_.repair);
+        const int32_t made = contraction_pass(context, geometry_, settings_.repair, counts.clearance_tests);
         edit_.compact();
         return made;
     });

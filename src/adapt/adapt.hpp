@@ -15,6 +15,7 @@ namespace sfa {
 
 struct AdaptCounts {
     int32_t passes = 0, splits = 0, contractions = 0, flips = 0;
+    int64_t clearance_tests = 0; // contraction_pass's count of exact triangle tests
     // The largest relative volume change of a closed component that the operations made
     // (restore_enclosed_volumes), and the correction took back if it was on.
     double volume_correction = 0;

@@ -11,7 +11,6 @@
 #include "geometry/triangle_intersection.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 
 namespace sfa {
@@ -111,9 +110,6 @@ bool faces_survive(const TriMesh &mesh, const SurfaceAnalysis &analysis, const C
     return ok;
 }
 
-// The exact triangle tests stays_clear_of_neighbours made (contraction_clearance_tests).
-std::atomic<int64_t> clearance_tests{0};
-
 // A vertex with at least this many faces has its fan indexed by angle (FanSectors) for
 // stays_clear_of_neighbours: below it, reading the fan costs less than looking it up.
 constexpr int32_t min_indexed_valence = 64;
@@ -144,9 +140,10 @@ size_t changed_limit(size_t faces) { return 8 + static_cast<size_t>(2 * std::sqr
 // vertex) is not tested, so the fan of a neighbour that is a corner of the moved face is
 // skipped whole; the fans in `hubs` are read through their index, and only the faces in
 // the moved face's sectors are tested (fan_sectors.hpp: none that could meet it is left
-// out). The answer is that of testing every face around every neighbour.
+// out). The answer is that of testing every face around every neighbour. The exact
+// triangle tests made are added to `tests`.
 bool stays_clear_of_neighbours(const TriMesh &mesh, int32_t h, const Vec3 &merged, const HubFans &hubs,
-                               std::vector<int32_t> &nearby, FanSectors &merged_fan)
+                               std::vector<int32_t> &nearby, FanSectors &merged_fan, int64_t &tests)
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
     const auto corner = [&](int32_t v) { return v == a || v == b ? merged : mesh.pos[v]; };
@@ -181,7 +178,6 @@ bool stays_clear_of_neighbours(const TriMesh &mesh, int32_t h, const Vec3 &merge
     });
     const int32_t moved = static_cast<int32_t>(nearby.size()) - first_moved;
 
-    int64_t tests = 0;
     // True if moved face f would meet face e (which does not move unless it shares a vertex).
     const auto meets = [&](int32_t f, int32_t e) {
         const Triangle &t = mesh.tri[f], &u = mesh.tri[e];
@@ -243,7 +239,6 @@ bool stays_clear_of_neighbours(const TriMesh &mesh, int32_t h, const Vec3 &merge
                     mesh.for_each_outgoing(v, [&](int32_t g) { around_w(TriMesh::face(g)); });
         }
     }
-    clearance_tests.fetch_add(tests, std::memory_order_relaxed);
     return clear;
 }
 
@@ -323,13 +318,13 @@ bool merged_position(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32
 bool contraction_allowed(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h,
                          const RepairSettings &settings, const CarriedFeatures &features,
                          const CarriedConstraints &constraints, bool coarsens, const HubFans &hubs,
-                         std::vector<int32_t> &nearby, FanSectors &merged_fan, Vec3 &merged)
+                         std::vector<int32_t> &nearby, FanSectors &merged_fan, int64_t &tests, Vec3 &merged)
 {
     return wants_contraction(mesh, analysis, h, settings, coarsens) && collapse_keeps_manifold(mesh, h) &&
            merged_position(mesh, analysis, h, features, constraints,
                            settings.contract_short_ratio * settings.desired_length, merged) &&
            faces_survive(mesh, analysis, features, h, merged) &&
-           stays_clear_of_neighbours(mesh, h, merged, hubs, nearby, merged_fan);
+           stays_clear_of_neighbours(mesh, h, merged, hubs, nearby, merged_fan, tests);
 }
 
 // The edge between a and b, in either direction, or -1.
@@ -370,7 +365,7 @@ public:
     Contraction(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings)
         : mesh_(context.edit.mesh()), analysis_(analysis), repair_(settings, context.size),
           features_(context.features), constraints_(context.constraints), guard_(context.guard),
-          nearby_(loop_threads()), merged_fans_(loop_threads())
+          nearby_(loop_threads()), merged_fans_(loop_threads()), tests_(loop_threads(), 0)
     {
         // stays_clear_of_neighbours lists the fans of the neighbours of both ends that are
         // not indexed, those neighbours that are, and the moved faces: each thread's list is allocated for that here, so that none grows in
@@ -429,7 +424,7 @@ public:
     {
         return contraction_allowed(mesh_, analysis_, h, repair_.at_edge(mesh_, h), features_, constraints_,
                                    shortness_applies(mesh_, h, features_, guard_), hubs_, nearby_[thread_index()],
-                                   merged_fans_[thread_index()], plan.merged);
+                                   merged_fans_[thread_index()], tests_[thread_index()], plan.merged);
     }
     // Each contraction marks the merged vertex and its neighbours.
     bool may_have_changed(int32_t h, const ChangedVertices &changed) const
@@ -482,16 +477,22 @@ private:
     HubFans hubs_;
     mutable std::vector<std::vector<int32_t>> nearby_; // scratch per thread
     mutable std::vector<FanSectors> merged_fans_;     // scratch per thread
+
+public:
+    // The exact triangle tests the clearance checks made, per thread (a count of work).
+    mutable std::vector<int64_t> tests_;
 };
 
 } // namespace
 
-int64_t contraction_clearance_tests() { return clearance_tests.load(std::memory_order_relaxed); }
-
-int32_t contraction_pass(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings)
+int32_t contraction_pass(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings,
+                         int64_t &clearance_tests)
 {
     Contraction contraction(context, analysis, settings);
-    return run_edge_pass(context.edit, contraction);
+    const int32_t made = run_edge_pass(context.edit, contraction);
+    for (const int64_t tests : contraction.tests_)
+        clearance_tests += tests;
+    return made;
 }
 
 } // namespace sfa

@@ -23,12 +23,10 @@ namespace sfa {
 // through the faces around the ends' neighbours or (with a guard) a watched face.
 // `analysis` gives the metric and frames of the mesh as the pass finds it. The dead
 // vertices and triangles stay until the edit compacts the mesh. Returns the number of
-// contractions.
-int32_t contraction_pass(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings);
-
-// The exact triangle tests made by the check that a contraction's faces pass through none
-// around the ends' neighbours, since the library was loaded (for tests: issue 18 made it
-// grow with the square of a vertex's valence).
-int64_t contraction_clearance_tests();
+// contractions; adds to `clearance_tests` the exact triangle tests made by the check that
+// the faces pass through none around the neighbours (a count of work: it grew with the
+// square of a vertex's valence before fan_sectors).
+int32_t contraction_pass(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings,
+                         int64_t &clearance_tests);
 
 } // namespace sfa

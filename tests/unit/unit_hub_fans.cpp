@@ -3,7 +3,10 @@
 // is for (issue 18): the check that a contraction's faces pass through none around the
 // ends' neighbours makes O(valence) exact triangle tests, not O(valence^2), on a cone
 // whose apex and base centre neighbour every rim vertex.
-#include "adapt/contract.hpp"
+#include "adapt/adapt.hpp"
+#include "adapt/settings.hpp"
+#include "geometry/measures.hpp"
+#include "mesh/components.hpp"
 #include "geometry/fan_sectors.hpp"
 #include "geometry/triangle_intersection.hpp"
 #include "mesh/validate.hpp"
@@ -152,24 +155,26 @@ void merged_fan_holds_every_moved_face_met(void **)
     mesh_free(&sphere);
 }
 
-// sfa_adapt on the cone of valence 1000: about 5 n contraction checks, each of which read
-// the apex's and the base centre's whole fans before (27 n^2 = 2.7e7 triangle tests).
+// The adaptation of the cone of valence 1000 (as sfa_adapt makes it): about 5 n
+// contraction checks, each of which read the apex's and the base centre's whole fans
+// before (27 n^2 = 2.7e7 triangle tests).
 void cone_clearance_tests_grow_linearly(void **)
 {
     const int n = 1000;
     std::vector<double> xyz;
     std::vector<int32_t> tris;
     cone(n, xyz, tris);
-    sfa_surface *s = nullptr;
-    assert_int_equal(sfa_create(&s), SFA_OK);
-    assert_int_equal(sfa_set_mesh(s, n + 2, xyz.data(), 2 * n, tris.data(), 0), SFA_OK);
-    const int64_t before = contraction_clearance_tests();
-    assert_int_equal(sfa_adapt(s), SFA_OK);
-    const int64_t tests = contraction_clearance_tests() - before;
-    print_message("%lld triangle tests for valence %d\n", static_cast<long long>(tests), n);
-    assert_true(tests > 0);
-    assert_true(tests < 1000 * n); // before: 27 n^2
-    sfa_destroy(s);
+    TriMesh mesh = validated_mesh(MeshInput{n + 2, xyz.data(), 2 * n, tris.data(), 0, false});
+    const AdaptSettings settings = adapt_settings(Parameters(), edge_lengths(mesh).mean);
+    SurfaceData data;
+    std::vector<char> near_sheet;
+    SurfaceAnalysis workspace;
+    Components components = connected_components(mesh);
+    const AdaptCounts counts = adapt_surface(mesh, data, settings, near_sheet, workspace, components);
+    print_message("%lld triangle tests for valence %d\n", static_cast<long long>(counts.clearance_tests), n);
+    assert_true(counts.contractions > n);
+    assert_true(counts.clearance_tests > 0);
+    assert_true(counts.clearance_tests < 1000 * n); // before: 27 n^2
 }
 
 } // namespace
