@@ -682,14 +682,7 @@ class Surface:
     def add_field(self, values):
         """sfa_add_field_checked(): values (n,) or (n, k) for the n current vertices;
         returns the field's id. The values follow motion, smoothing and adaptation."""
-        h = self._handle()
-        v = _doubles(values, "values")
-        ncomp = 1 if v.ndim == 1 else v.shape[1]
-        fid = _i32()
-        self._check(self._lib.sfa_add_field_checked(h, v.shape[0], ncomp, _dp(v), ctypes.byref(fid)),
-                    "sfa_add_field_checked")
-        self._vertex_fields[fid.value] = (ncomp, v.ndim == 1)
-        return fid.value
+        return self._add(values, self._vertex_fields, self._lib.sfa_add_field_checked, "sfa_add_field_checked")
 
     def get_field(self, field_id):
         """sfa_get_field(): the field's values on the current vertices, in the shape they
@@ -700,19 +693,24 @@ class Surface:
     def add_face_field(self, values):
         """sfa_add_face_field_checked(): densities (m,) or (m, k) per unit area for the m
         current triangles; returns the face field's id (a sequence of its own)."""
-        h = self._handle()
-        v = _doubles(values, "values")
-        ncomp = 1 if v.ndim == 1 else v.shape[1]
-        fid = _i32()
-        self._check(self._lib.sfa_add_face_field_checked(h, v.shape[0], ncomp, _dp(v), ctypes.byref(fid)),
-                    "sfa_add_face_field_checked")
-        self._face_fields[fid.value] = (ncomp, v.ndim == 1)
-        return fid.value
+        return self._add(values, self._face_fields, self._lib.sfa_add_face_field_checked,
+                         "sfa_add_face_field_checked")
 
     def get_face_field(self, field_id):
         """sfa_get_face_field(): the densities on the current triangles."""
         return self._get(field_id, self._face_fields, self.ntris, self._lib.sfa_get_face_field,
                          "sfa_get_face_field", "face field")
+
+    def _add(self, values, known, function, name):
+        """A vertex or face field added through its _checked function; its width and shape
+        recorded in `known` (the C API cannot be asked for them)."""
+        h = self._handle()
+        v = _doubles(values, "values")
+        ncomp = 1 if v.ndim == 1 else v.shape[1]
+        fid = _i32()
+        self._check(function(h, v.shape[0], ncomp, _dp(v), ctypes.byref(fid)), name)
+        known[fid.value] = (ncomp, v.ndim == 1)
+        return fid.value
 
     def _get(self, field_id, known, rows, function, name, what):
         h = self._handle()
