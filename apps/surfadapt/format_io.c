@@ -7,18 +7,28 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* A growing array of `count` items of `item` bytes with room for one more: `array` itself
+ * while it has room, else reallocated to twice its capacity (`*cap` updated). Counts stay
+ * within int32_t, the library's. NULL when it cannot grow (the array is then unchanged). */
+static void *with_room(void *array, int64_t count, int64_t *cap, size_t item)
+{
+    if (count >= INT32_MAX)
+        return NULL;
+    if (count < *cap)
+        return array;
+    const int64_t grown_cap = *cap ? 2 * *cap : 1024;
+    void *grown = realloc(array, item * (size_t)grown_cap);
+    if (grown)
+        *cap = grown_cap;
+    return grown;
+}
+
 int builder_add_vertex(mesh_builder *b, const double p[3])
 {
-    if (b->nverts >= INT32_MAX)
+    double *xyz = with_room(b->xyz, b->nverts, &b->vcap, 3 * sizeof(double));
+    if (!xyz)
         return -1;
-    if (b->nverts == b->vcap) {
-        const int64_t cap = b->vcap ? 2 * b->vcap : 1024;
-        double *grown = realloc(b->xyz, sizeof(double) * 3 * (size_t)cap);
-        if (!grown)
-            return -1;
-        b->xyz = grown;
-        b->vcap = cap;
-    }
+    b->xyz = xyz;
     memcpy(b->xyz + 3 * b->nverts, p, sizeof(double) * 3);
     ++b->nverts;
     return 0;
@@ -26,16 +36,10 @@ int builder_add_vertex(mesh_builder *b, const double p[3])
 
 int builder_add_triangle(mesh_builder *b, int32_t i, int32_t j, int32_t k)
 {
-    if (b->ntris >= INT32_MAX)
+    int32_t *tris = with_room(b->tris, b->ntris, &b->tcap, 3 * sizeof(int32_t));
+    if (!tris)
         return -1;
-    if (b->ntris == b->tcap) {
-        const int64_t cap = b->tcap ? 2 * b->tcap : 2048;
-        int32_t *grown = realloc(b->tris, sizeof(int32_t) * 3 * (size_t)cap);
-        if (!grown)
-            return -1;
-        b->tris = grown;
-        b->tcap = cap;
-    }
+    b->tris = tris;
     int32_t *t = b->tris + 3 * b->ntris;
     t[0] = i;
     t[1] = j;
@@ -48,14 +52,10 @@ int builder_begin_face(mesh_builder *b)
 {
     if (!b->record_faces)
         return 0;
-    if (b->nfaces == b->fcap) {
-        const int64_t cap = b->fcap ? 2 * b->fcap : 1024;
-        int32_t *grown = realloc(b->face_first, sizeof(int32_t) * (size_t)cap);
-        if (!grown)
-            return -1;
-        b->face_first = grown;
-        b->fcap = cap;
-    }
+    int32_t *first = with_room(b->face_first, b->nfaces, &b->fcap, sizeof(int32_t));
+    if (!first)
+        return -1;
+    b->face_first = first;
     b->face_first[b->nfaces++] = (int32_t)b->ntris;
     return 0;
 }
