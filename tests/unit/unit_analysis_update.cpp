@@ -69,7 +69,8 @@ void each_pass_leaves_the_analysis_a_full_one_would_give(void **)
         tracked.update(mesh, bounds);
         assert_same_geometry(geometry, analyze_geometry(mesh, bounds));
 
-        contractions += contraction_pass(context, geometry, repair);
+        int64_t clearance_tests = 0;
+        contractions += contraction_pass(context, geometry, repair, clearance_tests);
         edit.compact();
         tracked.update(mesh, bounds);
         assert_same_geometry(geometry, analyze_geometry(mesh, bounds));
