@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--worst K] [--json]
+// fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--worst K] [--by-turn] [--json]
 //
 // The shape error of a tracked surface, measured by backtracing (issue "many bubbles",
 // item 3). The paper's flows are time-reversible: every point of the exact surface at time
@@ -18,12 +18,14 @@
 // first line names the flow, its period, the time and the start sphere. The RK4 step is
 // T / N (N = 1000 by default: halving it changes the figures by about 1e-8); --check-step integrates again at half the step and prints
 // how much that changes each figure, which must be nothing that matters. --worst K lists
-// the K samples of the largest error (a vertex with its number in the file).
+// the K samples of the largest error (a vertex with its number in the file); --by-turn
+// tells where the error lies (print_by_turn).
 #include "checkpoint.hpp"
 #include "flows.hpp"
 #include "obj_io.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -203,9 +205,113 @@ void print_worst(const Samples &samples, const std::vector<double> &signed_error
     }
 }
 
+double triangle_area(const double *xyz, const int32_t *v)
+{
+    const double *a = xyz + 3 * v[0], *b = xyz + 3 * v[1], *c = xyz + 3 * v[2];
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
+// The largest angle, in degrees, between each triangle's normal and an edge neighbour's.
+std::vector<double> largest_normal_turns(const sfa_mesh_data &mesh)
+{
+    std::vector<std::array<double, 3>> normals(mesh.ntris);
+    for (int32_t t = 0; t < mesh.ntris; ++t) {
+        const int32_t *v = mesh.tris + 3 * t;
+        const double *a = mesh.xyz + 3 * v[0], *b = mesh.xyz + 3 * v[1], *c = mesh.xyz + 3 * v[2];
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        std::array<double, 3> &n = normals[t];
+        n = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+        const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        for (double &x : n)
+            x /= length > 0 ? length : 1;
+    }
+    std::vector<std::pair<uint64_t, int32_t>> sides; // (edge key, triangle)
+    for (int32_t t = 0; t < mesh.ntris; ++t)
+        for (int k = 0; k < 3; ++k) {
+            const uint64_t i = static_cast<uint32_t>(mesh.tris[3 * t + k]),
+                           j = static_cast<uint32_t>(mesh.tris[3 * t + (k + 1) % 3]);
+            sides.emplace_back(std::min(i, j) << 32 | std::max(i, j), t);
+        }
+    std::sort(sides.begin(), sides.end());
+    std::vector<double> turn(mesh.ntris, 0.0);
+    for (size_t e = 0; e + 1 < sides.size(); ++e)
+        if (sides[e].first == sides[e + 1].first) {
+            const int32_t t = sides[e].second, u = sides[e + 1].second;
+            const auto &n = normals[t], &m = normals[u];
+            const double cosine = std::max(-1.0, std::min(1.0, n[0] * m[0] + n[1] * m[1] + n[2] * m[2]));
+            const double angle = std::acos(cosine) * 180 / 3.14159265358979323846;
+            turn[t] = std::max(turn[t], angle);
+            turn[u] = std::max(turn[u], angle);
+        }
+    return turn;
+}
+
+// Where the error lies (--by-turn): the triangles grouped by their largest normal turn (how
+// far the mesh is from resolving the curvature there). For each group: its share of the
+// area and of the squared error, the RMS and the signed mean of d over its inside points,
+// and that d split in two: the part the corners' own errors explain (interpolated
+// linearly: the vertices are off the surface) and the rest (the chords: the triangle cuts
+// across the surface between its corners). And the stretch: the area at time t over the
+// area the corners span at t = 0, area-weighted. The flows conserve volume, so a sheet
+// stretched J times is J times thinner and a normal error there is J times larger in d.
+void print_by_turn(const sfa_mesh_data &mesh, const Samples &samples, const std::vector<double> &signed_error,
+                   const std::vector<double> &start)
+{
+    const std::vector<double> turn = largest_normal_turns(mesh);
+    const double bounds[] = {0.5, 1, 2, 4, 8, 15, 30, 180};
+    const int groups = sizeof bounds / sizeof bounds[0];
+    struct Group {
+        int32_t triangles = 0;
+        double area = 0, square = 0, sum = 0, corner_square = 0, chord_square = 0, stretch = 0;
+    };
+    std::vector<Group> group(groups);
+    Group all;
+    all.triangles = mesh.ntris;
+    // The four inside points of sample_mesh, in its order.
+    static const double inside[4][3] = {
+        {1.0 / 3, 1.0 / 3, 1.0 / 3}, {2.0 / 3, 1.0 / 6, 1.0 / 6}, {1.0 / 6, 2.0 / 3, 1.0 / 6}, {1.0 / 6, 1.0 / 6, 2.0 / 3}};
+    for (int32_t t = 0; t < mesh.ntris; ++t) {
+        Group &g = group[std::lower_bound(bounds, bounds + groups, turn[t]) - bounds];
+        const int32_t *v = mesh.tris + 3 * t;
+        const double area = triangle_area(mesh.xyz, v);
+        ++g.triangles;
+        g.stretch += area * area / triangle_area(start.data(), v);
+        for (int k = 0; k < 4; ++k) {
+            const size_t i = samples.vertices + 4 * static_cast<size_t>(t) + k;
+            const double w = samples.weight[i], d = signed_error[i];
+            const double corners = inside[k][0] * signed_error[v[0]] + inside[k][1] * signed_error[v[1]] +
+                                   inside[k][2] * signed_error[v[2]];
+            for (Group *h : {&g, &all}) {
+                h->area += w;
+                h->square += w * d * d;
+                h->sum += w * d;
+                h->corner_square += w * corners * corners;
+                h->chord_square += w * (d - corners) * (d - corners);
+            }
+        }
+    }
+    std::printf("  largest normal turn | triangles | area | squared error | RMS d | signed mean | RMS corners' part, chords' part | stretch\n");
+    for (int k = 0; k <= groups; ++k) {
+        const Group &g = k < groups ? group[k] : all;
+        if (k < groups && g.triangles == 0)
+            continue;
+        char range[48] = "all";
+        if (k < groups)
+            std::snprintf(range, sizeof range, "%g to %g deg", k ? bounds[k - 1] : 0.0, bounds[k]);
+        std::printf("  %-14s %8d %5.1f %% %5.1f %%  %.2e  %+.2e  %.2e %.2e", range, g.triangles,
+                    100 * g.area / all.area, 100 * g.square / all.square, std::sqrt(g.square / g.area),
+                    g.sum / g.area, std::sqrt(g.corner_square / g.area), std::sqrt(g.chord_square / g.area));
+        if (k < groups)
+            std::printf("  %5.1f", g.stretch / g.area);
+        std::printf("\n");
+    }
+}
+
 int usage()
 {
-    std::fprintf(stderr, "usage: fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--worst K] [--json]\n");
+    std::fprintf(stderr, "usage: fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--worst K] [--by-turn] [--json]\n");
     return 2;
 }
 
@@ -219,6 +325,7 @@ int main(int argc, char **argv)
     int steps_per_period = 1000;
     bool check_step = false, json = false;
     int worst_count = 0;
+    bool by_turn = false;
     for (int i = 2; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--steps-per-period") && i + 1 < argc)
             steps_per_period = std::atoi(argv[++i]);
@@ -226,6 +333,8 @@ int main(int argc, char **argv)
             check_step = true;
         else if (!std::strcmp(argv[i], "--worst") && i + 1 < argc)
             worst_count = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--by-turn"))
+            by_turn = true;
         else if (!std::strcmp(argv[i], "--json"))
             json = true;
         else
@@ -256,12 +365,14 @@ int main(int argc, char **argv)
     const Samples samples = sample_mesh(mesh);
     const auto [min_angle, max_angle] = angle_range(mesh);
     const int32_t nverts = mesh.nverts;
-    mesh_free(&mesh);
 
     const int steps = std::max(1, static_cast<int>(std::ceil(info.time / info.period * steps_per_period)));
     std::vector<double> start = samples.xyz;
     backtrace(velocity, info.period, info.time, steps, start);
     const std::vector<double> errors = signed_errors(start, info);
+    if (by_turn)
+        print_by_turn(mesh, samples, errors, start);
+    mesh_free(&mesh);
     const Figures f = figures_of(samples, errors);
     const double *worst = samples.xyz.data() + 3 * f.worst;
     std::printf("%s: %s, T = %g, t = %g, %d vertices, %zu samples, %d RK4 steps back: d max %.2e, RMS %.2e, "
