@@ -46,6 +46,8 @@ bool read_flow_options(int argc, char **argv, int first, FlowRun &run, const cha
             run.out_dir = argv[++i];
         else if (!std::strcmp(argv[i], "--checkpoints") && i + 1 < argc)
             run.checkpoint_dir = argv[++i];
+        else if (!std::strcmp(argv[i], "--resume") && i + 1 < argc)
+            run.resume_from = argv[++i];
         else if (!std::strcmp(argv[i], "--period") && !std::strcmp(command, "vortex"))
             ++i; // read by the caller
         else {

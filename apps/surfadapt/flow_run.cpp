@@ -5,6 +5,7 @@
 #include "cli.hpp"
 #include "flows.hpp"
 #include "icosphere.h"
+#include "obj_io.h"
 #include "progress.hpp"
 #include "vtu_series.h"
 
@@ -21,23 +22,64 @@ double since(Clock::time_point start) { return std::chrono::duration<double>(Clo
 
 } // namespace
 
-int run_flow(const FlowRun &run, FlowResult &result)
+namespace {
+
+// The start of a run: the geodesic sphere at t = 0, or the checkpoint run.resume_from and
+// its time. Returns the surface, or null after a message.
+sfa_surface *start_surface(const FlowRun &run, double &t)
 {
-    int32_t nverts = 0, ntris = 0;
-    double *xyz = nullptr;
-    int32_t *tris = nullptr;
-    if (geodesic_sphere(run.frequency, run.radius, run.centre, &nverts, &xyz, &ntris, &tris) != 0) {
-        std::fprintf(stderr, "surfadapt: out of memory\n");
-        return 1;
+    sfa_mesh_data mesh{};
+    char message[512];
+    t = 0;
+    if (run.resume_from.empty()) {
+        if (geodesic_sphere(run.frequency, run.radius, run.centre, &mesh.nverts, &mesh.xyz, &mesh.ntris, &mesh.tris) != 0) {
+            std::fprintf(stderr, "surfadapt: out of memory\n");
+            return nullptr;
+        }
+    } else {
+        Checkpoint info;
+        std::string error;
+        if (!read_checkpoint_header(run.resume_from, info, error)) {
+            std::fprintf(stderr, "surfadapt: %s\n", error.c_str());
+            return nullptr;
+        }
+        if (info.flow != run.flow || info.period != run.period) {
+            std::fprintf(stderr, "surfadapt: %s is a checkpoint of %s with T = %g, not of this run (%s, T = %g)\n",
+                         run.resume_from.c_str(), info.flow.c_str(), info.period, run.flow, run.period);
+            return nullptr;
+        }
+        if (mesh_read(run.resume_from.c_str(), &mesh, message, sizeof message) != 0) {
+            std::fprintf(stderr, "surfadapt: %s\n", message);
+            return nullptr;
+        }
+        t = info.time;
     }
     sfa_surface *s = nullptr;
-    if (sfa_create(&s) != SFA_OK)
+    if (sfa_create(&s) != SFA_OK) {
+        mesh_free(&mesh);
+        return nullptr;
+    }
+    const int rc = sfa_set_mesh(s, mesh.nverts, mesh.xyz, mesh.ntris, mesh.tris, 0);
+    mesh_free(&mesh);
+    if (rc != SFA_OK) {
+        fail(s, "sfa_set_mesh");
+        return nullptr;
+    }
+    return s;
+}
+
+} // namespace
+
+int run_flow(const FlowRun &run, FlowResult &result)
+{
+    double t_start = 0;
+    sfa_surface *s = start_surface(run, t_start);
+    if (!s)
         return 1;
-    const int rc = sfa_set_mesh(s, nverts, xyz, ntris, tris, 0);
-    std::free(xyz);
-    std::free(tris);
-    if (rc != SFA_OK)
-        return fail(s, "sfa_set_mesh");
+    // A resumed run takes the steps after its checkpoint's time.
+    const int first_step = static_cast<int>(std::lround(t_start / run.dt));
+    int32_t nverts = 0;
+    sfa_get_counts(s, &nverts, nullptr);
     if (run.isotropic)
         sfa_set_param(s, SFA_PARAM_ANISOTROPIC, 0);
     sfa_set_param(s, SFA_PARAM_DENOISE, run.denoise);
@@ -56,6 +98,9 @@ int run_flow(const FlowRun &run, FlowResult &result)
                 run.steps, run.isotropic ? "isotropic" : "anisotropic", run.adapt_every, run.denoise,
                 run.crossing_guard ? "on" : "off", run.collision_safe ? "on" : "off",
                 run.topology_change ? "on" : "off", run.volume_correction ? "on" : "off");
+    if (first_step > 0)
+        std::printf("resumed from %s at t = %g (step %d); volume errors are relative to its volume\n\n",
+                    run.resume_from.c_str(), t_start, first_step);
     std::printf("%5s %6s %9s %10s %13s %10s %9s %9s %9s %9s %8s\n", "step", "t", "vertices", "triangles",
                 "volume err %", "area ratio", "min angle", "max angle", "max turn", "crossings", "seconds");
     FlowPeriod flow{run.period};
@@ -98,7 +143,7 @@ int run_flow(const FlowRun &run, FlowResult &result)
         const Checkpoint info{run.flow, run.period, t, {run.centre[0], run.centre[1], run.centre[2]}, run.radius};
         return save_checkpoint(s, info, run.checkpoint_dir + name, error);
     };
-    if (!report(0, 0) || !save(0, 0)) {
+    if (!report(first_step, t_start) || !save(first_step, t_start)) {
         std::fprintf(stderr, "surfadapt: %s\n", error.c_str());
         sfa_destroy(s);
         return 1;
@@ -127,8 +172,8 @@ int run_flow(const FlowRun &run, FlowResult &result)
         return true;
     };
     const auto start = Clock::now();
-    double t = 0;
-    for (int step = 1; step <= run.steps; ++step) {
+    double t = t_start;
+    for (int step = first_step + 1; step <= run.steps; ++step) {
         const double t_end = step * run.dt;
         int substeps = 0;
         auto phase = Clock::now();

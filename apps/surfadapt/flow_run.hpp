@@ -33,6 +33,11 @@ struct FlowRun {
     bool topology_change = false; // SFA_PARAM_TOPOLOGY_CHANGE
     bool volume_correction = true; // SFA_PARAM_VOLUME_CORRECTION
     bool smoothing = true;  // false: a step that is not adapted is not smoothed either
+    // Empty: start from the sphere at t = 0. Otherwise a checkpoint of the same flow, period
+    // and time step: the run goes on from its mesh and time (to look at a late stage of a
+    // long run without running all of it; parameters and size field are the defaults, so
+    // the run differs from the one that wrote the checkpoint from there on).
+    std::string resume_from = "";
 };
 
 struct FlowResult {

@@ -15,7 +15,7 @@ fidelity=${FIDELITY:-build/bench/fidelity}
 # figure FILE KEY: the number after "KEY": in the JSON line of FILE.
 figure() { sed -n "s/.*\"$2\":\([-0-9.e+]*\).*/\1/p" "$1"; }
 # below A B [FACTOR]: A < FACTOR * B (FACTOR 1 if not given).
-below() { awk -v a="$1" -v b="$2" -v f="${3:-1}" 'BEGIN { exit !(a < f * b) }'; }
+below() { [ -n "$1" ] && [ -n "$2" ] && awk -v a="$1" -v b="$2" -v f="${3:-1}" 'BEGIN { exit !(a < f * b) }'; }
 
 check "enright (2,562 vertices, a whole period) saves its checkpoints at 0, T/4, T/2, 3T/4 and T" \
   sh -c "'$tool' enright --resolution 16 --report-every 1000 --checkpoints '$work/tracked' >/dev/null &&
@@ -50,6 +50,17 @@ check "without remeshing the vertices follow the flow (error below 1e-4)" \
   below "$(figure "$work/advected.txt" vertex_max)" 1e-4
 check "but the stretched triangles between them leave the surface: RMS 10 times the tracked one's" \
   below "$(figure "$work/tracked.txt" rms)" "$(figure "$work/advected.txt" rms)" 0.1
+
+check "--resume goes on from the T/2 checkpoint to t = T, saving the later checkpoints" \
+  sh -c "'$tool' enright --resolution 16 --report-every 1000 --resume '$work/tracked/t1.5.obj' \
+           --checkpoints '$work/resumed' >'$work/resumed.log' &&
+         grep -q 'resumed from .* at t = 1.5 (step 100)' '$work/resumed.log' &&
+         ls '$work/resumed' | tr '\\n' ' ' | grep -qx 't1.5.obj t2.25.obj t3.obj '"
+"$fidelity" "$work/resumed/t3.obj" --json >"$work/resumed.txt"
+check "and ends within 2 times the start mesh's RMS error, as the whole run does" \
+  below "$(figure "$work/resumed.txt" rms)" "$(figure "$work/start.txt" rms)" 2
+check "a checkpoint of another flow is refused with the reason" \
+  sh -c "'$tool' vortex --period 2 --resume '$work/tracked/t1.5.obj' 2>&1 | grep -q 'a checkpoint of enright with T = 3, not of this run (vortex, T = 2)'"
 
 check "a mesh that is not a checkpoint is refused with the reason" \
   sh -c "printf 'v 0 0 0\n' >'$work/plain.obj'; '$fidelity' '$work/plain.obj' 2>&1 | grep -q 'not a surfadapt checkpoint'"
