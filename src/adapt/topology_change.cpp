@@ -2,6 +2,7 @@
 #include "adapt/topology_change.hpp"
 
 #include "geometry/box_pairs.hpp"
+#include "geometry/distance.hpp"
 #include "geometry/triangle_intersection.hpp"
 #include "mesh/components.hpp"
 #include "mesh/parallel.hpp"
@@ -32,38 +33,6 @@ constexpr double least_parting = 0.2, most_parting = 0.9, parted_by = 2;
 // below what the mesh resolves there: it is removed (a drop smaller than that is a
 // tetrahedron or two, and a flow that crushes it would stop the motion).
 constexpr double tiny_drop = 2;
-
-// The closest points of segments p0-p1 and q0-q1 (Ericson, Real-Time Collision Detection,
-// §5.1.9): p0 + s (p1 - p0) and q0 + t (q1 - q0), s and t in [0, 1].
-std::pair<Vec3, Vec3> closest_points(const Vec3 &p0, const Vec3 &p1, const Vec3 &q0, const Vec3 &q1)
-{
-    const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
-    const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-    const auto clamp01 = [](double x) { return x > 0 ? (x < 1 ? x : 1) : 0; }; // NaN: 0
-    double s = 0, t = 0;
-    if (a <= 0 && e <= 0)
-        return {p0, q0};
-    if (a <= 0) {
-        t = clamp01(f / e);
-    } else {
-        const double c = d1.dot(r);
-        if (e <= 0) {
-            s = clamp01(-c / a);
-        } else {
-            const double b = d1.dot(d2), denominator = a * e - b * b;
-            s = denominator > 0 ? clamp01((b * f - c * e) / denominator) : 0;
-            t = (b * s + f) / e;
-            if (t < 0) {
-                t = 0;
-                s = clamp01(-c / a);
-            } else if (t > 1) {
-                t = 1;
-                s = clamp01((b - c) / a);
-            }
-        }
-    }
-    return {p0 + s * d1, q0 + t * d2};
-}
 
 Vec3 unit_normal(const std::vector<Vec3> &pos, const Triangle &t)
 {

@@ -10,7 +10,10 @@
 // the separating-axis theorem's candidates for two triangles (the two face normals and
 // the nine cross products of their edges), the planes square to a face through one of
 // its edges (two triangles side by side in one sheet), and the plane square to the line
-// of their centres.
+// of their centres. A pair that no such plane lets move the whole step gets a second
+// chance: its distance is measured as it moves (additive continuous collision detection),
+// which lets layers slide along each other a hair apart, as they do at a cusp, where a
+// plane fixed at the start is soon crossed by their turning.
 #pragma once
 
 #include "mesh/tri_mesh.hpp"
@@ -30,8 +33,10 @@ struct Approach {
 };
 
 // The largest t <= dt (and the pair that sets it, if t < dt) for which no two triangles
-// that share no vertex come closer than half their start separation across the plane
-// that certifies them apart: each may take a quarter of the gap. Pairs that already meet
+// that share no vertex come closer than half their start separation, certified either
+// across a plane that separates them (each may take a quarter of the gap) or, for a pair
+// that plane would stop early, by measuring their distance as they move (additive
+// continuous collision detection, collision_time.cpp). Pairs that already meet
 // or touch at the start have no such plane and are not limited. The pairs are found by
 // their swept boxes over [0, dt] (box_pairs.hpp); the result does not depend on the
 // number of threads.

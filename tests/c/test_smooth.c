@@ -169,15 +169,16 @@ static void jittered_box_keeps_corners_edges_planes_and_volume(void **state)
 }
 
 /* A field that is linear on a flat patch stays exactly linear at the moved vertices. */
-/* A correction the library withholds is never silent. A slab 0.023 thick between edges of
+/* A correction the library withholds is never silent. A slab 0.01 thick between edges of
  * 0.25 (denoised strongly, three sweeps): offsetting it back would carry one face through
- * the other, so it keeps its shape and its 20 % volume change, and SFA_MEASURE_VOLUME_LEFT
- * says exactly that much. The same slab between edges of 0.1 is corrected: nothing left.
+ * the other, so it keeps its shape and its 67 % volume change, and SFA_MEASURE_VOLUME_LEFT
+ * says exactly that much. (At 0.023 thick the offset is certified safe, and made, since
+ * the certificate measures how near the two faces come as they move.) The same slab between edges of 0.1 is corrected: nothing left.
  * With the correction off, what is left is what the operations did. */
 static void a_withheld_volume_correction_is_reported(void **state)
 {
     (void)state;
-    const double lo[3] = {0, 0, 0}, hi[3] = {1, 0.8, 0.023};
+    const double lo[3] = {0, 0, 0}, hi[3] = {1, 0.8, 0.01};
     for (int n = 4; n <= 10; n += 6) {
         sfa_mesh_data m = shape_box(n, lo, hi);
         sfa_surface *s = surface_from(&m, 0, NULL, 0);
@@ -186,7 +187,7 @@ static void a_withheld_volume_correction_is_reported(void **state)
         const double v0 = measure(s, SFA_MEASURE_VOLUME);
         assert_ok(s, sfa_smooth(s, 3));
         const double change = fabs(measure(s, SFA_MEASURE_VOLUME) - v0) / v0, left = measure(s, SFA_MEASURE_VOLUME_LEFT);
-        print_message("slab of %d vertices: volume changed by %.3e, reported left %.3e\n", m.nverts, change, left);
+        print_message("slab of %d vertices: volume changed by %.3e, reported left %.3e XX crossings %g turn %g minangle %g\n", m.nverts, change, left, measure(s, SFA_MEASURE_SELF_INTERSECTIONS), measure(s, SFA_MEASURE_MAX_NORMAL_TURN), measure(s, SFA_MEASURE_MIN_ANGLE));
         if (n == 4) {
             assert_true(change > 0.1);
             assert_true(fabs(left - change) <= 1e-9 * change);

@@ -103,6 +103,32 @@ void closing_plates_may_take_a_quarter_of_their_gap(void **)
     assert_true(first_approach(mesh, v, 1).time == 1);
 }
 
+// Two plates a ten-thousandth of their size apart, turning together about an axis between
+// them (as the two layers of a cusp do): a plane fixed at the start is soon crossed, but
+// their distance does not shrink, so they may move the whole step; and they never meet.
+// Closing in as well, they are stopped before they do.
+void layers_turning_a_hair_apart_may_move_on(void **)
+{
+    const double gap = 1e-4;
+    const Vec3 x[6] = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
+                       Vec3(0, 0, gap), Vec3(0, 1, gap), Vec3(1, 0, gap)};
+    const TriMesh mesh = two_triangles(x);
+    const Vec3 axis(0.3, 0.3, gap / 2), turn(0.01, -0.01, 0); // radians per unit time
+    std::vector<Vec3> v(6);
+    for (int k = 0; k < 6; ++k)
+        v[k] = turn.cross(x[k] - axis);
+    const Approach a = first_approach(mesh, v, 0.1);
+    assert_true(a.time == 0.1); // a plane fixed at the start would allow 0.002
+    for (int s = 0; s <= 1000; ++s)
+        assert_false(meet_at(mesh, v, 0.1 * s / 1000));
+    for (int k = 3; k < 6; ++k)
+        v[k] += Vec3(0, 0, -0.01); // meets at t = 0.01
+    const Approach b = first_approach(mesh, v, 0.1);
+    assert_true(b.time < 0.01 && b.time > 0);
+    for (int s = 0; s <= 1000; ++s)
+        assert_false(meet_at(mesh, v, b.time * s / 1000));
+}
+
 // Neighbours (a shared vertex) are the fold control's, and a pair that already meets has
 // no plane to keep: neither limits the step.
 void neighbours_and_meeting_pairs_do_not_limit(void **)
@@ -156,6 +182,7 @@ int main()
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(random_pairs_never_meet_within_the_allowed_step),
         cmocka_unit_test(closing_plates_may_take_a_quarter_of_their_gap),
+        cmocka_unit_test(layers_turning_a_hair_apart_may_move_on),
         cmocka_unit_test(neighbours_and_meeting_pairs_do_not_limit),
         cmocka_unit_test(the_answer_does_not_depend_on_threads),
     };
