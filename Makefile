@@ -104,7 +104,7 @@ SOAK_CHECK_ITERATIONS := 40
 
 TEST_RPATH := -Wl,-rpath,'$$ORIGIN/../../lib'
 
-.PHONY: all deps deps-check deps-doc test check check-python demo bench doc install uninstall clean abi-check abi-baseline fuzz \
+.PHONY: all deps deps-check deps-doc test check check-programs check-python demo bench doc install uninstall clean abi-check abi-baseline fuzz \
         soak
 .DEFAULT_GOAL := all
 # Keep object files of pattern-built programs, so that rebuilds are incremental.
@@ -226,8 +226,15 @@ $(PLUGIN_TEST): tests/plugin/test_dlopen.c | deps
 test: deps-check $(UNIT_TESTS) $(C_TESTS)
 	@OMP_WAIT_POLICY=$${OMP_WAIT_POLICY:-passive} scripts/run-tests.sh $(UNIT_TESTS) $(C_TESTS)
 
-check: deps-check all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE) $(C_EXAMPLE) $(PLUGIN_TEST) $(FIDELITY) $(SAN_TESTS) \
-       $(SAN_UNIT_TESTS) $(REPLAYS) $(SOAK)
+# What `make check` runs, built in parallel (one job per core, JOBS=N to change) once
+# every package is there, so that no compiler waits for apt-get; the tests then run one
+# after another.
+CHECK_PROGRAMS := all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE) $(C_EXAMPLE) $(PLUGIN_TEST) $(FIDELITY) \
+                  $(SAN_TESTS) $(SAN_UNIT_TESTS) $(REPLAYS) $(SOAK)
+JOBS ?= $(shell nproc 2>/dev/null || echo 1)
+check-programs: $(CHECK_PROGRAMS)
+check: deps-check
+	@$(MAKE) --no-print-directory -j$(JOBS) check-programs
 	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) "$(FORTRAN_EXAMPLE) 60" $(C_EXAMPLE) \
 	  "OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive $(SOAK) --iterations $(SOAK_CHECK_ITERATIONS) --seed $(SOAK_CHECK_SEED)" \
 	  tests/python/run.sh "$(PLUGIN_TEST) $(abspath $(LIB_SO))" "$(MAKE) --no-print-directory abi-check" \
