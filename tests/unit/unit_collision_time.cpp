@@ -19,22 +19,12 @@ extern "C" {
 #include <cmocka.h>
 }
 
+#include "numbers.hpp"
+
 using namespace sfa;
 
 namespace {
 
-struct Numbers { // SplitMix64: the same sequence on every machine
-    uint64_t state;
-    double uniform(double lo, double hi)
-    {
-        uint64_t z = (state += 0x9E3779B97F4A7C15u);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-        z ^= z >> 31;
-        return lo + (hi - lo) * static_cast<double>(z >> 11) * 0x1p-53;
-    }
-    Vec3 point(double r) { return Vec3(uniform(-r, r), uniform(-r, r), uniform(-r, r)); }
-};
 
 TriMesh two_triangles(const Vec3 (&x)[6])
 {

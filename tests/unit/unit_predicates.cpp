@@ -21,6 +21,8 @@ extern "C" {
 #include <cmocka.h>
 }
 
+#include "numbers.hpp"
+
 using namespace sfa;
 
 namespace {
@@ -131,20 +133,6 @@ bool exact_degenerate(const Vec3 (&t)[3])
 
 // ---- cases ----
 
-// A fixed sequence of numbers, the same on every machine (SplitMix64).
-struct Numbers {
-    uint64_t state;
-    uint64_t next()
-    {
-        uint64_t z = (state += 0x9E3779B97F4A7C15u);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-        return z ^ (z >> 31);
-    }
-    double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1p-53; }
-    Vec3 point(double extent) { return Vec3(uniform(-extent, extent), uniform(-extent, extent), uniform(-extent, extent)); }
-    int pick(int n) { return static_cast<int>(next() % static_cast<uint64_t>(n)); }
-};
 
 // A point of the plane of t, rounded: within an ulp or so of the plane, on either side or on it.
 Vec3 in_plane(const Vec3 (&t)[3], double s, double r) { return t[0] + s * (t[1] - t[0]) + r * (t[2] - t[0]); }
