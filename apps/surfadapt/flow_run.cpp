@@ -20,10 +20,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-} // namespace
-
-namespace {
-
 // The start of a run: the geodesic sphere at t = 0, or the checkpoint run.resume_from and
 // its time. Returns the surface, or null after a message.
 sfa_surface *start_surface(const FlowRun &run, double &t)
