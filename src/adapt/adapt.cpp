@@ -159,7 +159,7 @@ std::vector<char> Adaptation::finish(AdaptCounts &counts)
         // stay with them.
         PhaseClock clock(seconds_.smoothing);
         const VolumeRestoration restored = restore_enclosed_volumes(
-            edit_, features_.ranks(), component_of_.labels(), volumes_, closed_, settings_.volume_correction);
+            edit_, features_.ranks(), component_of_.labels(), volumes_, closed_, settings_.volume_correction, guard());
         counts.volume_correction = restored.largest_change;
         counts.volume_left = restored.largest_left;
     }

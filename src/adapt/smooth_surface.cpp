@@ -41,7 +41,8 @@ SmoothResult smooth_surface(TriMesh &mesh, SurfaceData &data, const SmoothSettin
             smoothing_sweep(mesh, analysis, settings.denoise, settings.crossing_guard ? &guard : nullptr);
         edit.move(moved);
         const VolumeRestoration restored = restore_enclosed_volumes(
-            edit, analysis.features.rank, components.of_vertex, volumes, components.closed, settings.volume_correction);
+            edit, analysis.features.rank, components.of_vertex, volumes, components.closed, settings.volume_correction,
+            settings.crossing_guard ? &guard : nullptr);
         result.volume_correction = std::max(result.volume_correction, restored.largest_change);
         // Sweep after sweep, what one left uncorrected stays: the volumes are the call's.
         result.volume_left = std::max(result.volume_left, restored.largest_left);

@@ -64,7 +64,8 @@ namespace {
 // (geometry/collision_time.hpp): every pair of triangles that share no vertex must keep
 // half its gap over the offset, or the components of the pair keep their shapes. Each
 // round leaves at least one more component as it was. The usual offsets (some 1e-5 of
-// the thickness on the paper's flows) stay below that and cost nothing.
+// the thickness on the paper's flows) stay below that and cost nothing; where the surface
+// nearly touches itself, the crossing guard looks at them (faces_carried_through).
 void keep_clear_of_other_sheets(const TriMesh &mesh, const std::vector<int32_t> &label,
                                 const std::vector<double> &volume, std::vector<Vec3> &moved)
 {
@@ -97,23 +98,30 @@ void keep_clear_of_other_sheets(const TriMesh &mesh, const std::vector<int32_t> 
     }
 }
 
-} // namespace
+// Each closed component's offset along its movable vertices' unit volume gradients, and
+// how far the operations had moved its volume.
+struct ComponentOffsets {
+    std::vector<Vec3> normal;   // per vertex: zero where the vertex does not move
+    std::vector<double> offset; // per component: zero where nothing can move
+    std::vector<double> change; // per component: |V - volume[c]| / |volume[c]| before the offset
+};
 
-VolumeRestoration restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank,
-                                           const std::vector<int32_t> &label, const std::vector<double> &volume,
-                                           const std::vector<char> &closed, bool correct)
+ComponentOffsets component_offsets(const TriMesh &mesh, const std::vector<char> &movable,
+                                   const std::vector<int32_t> &label, const std::vector<double> &volume,
+                                   const std::vector<char> &closed)
 {
-    // Every smooth vertex moves by its component's offset o along its unit volume gradient
+    // Every movable vertex moves by its component's offset o along its unit volume gradient
     // n_v; the six-fold volume of a component is then the cubic sum over its triangles of
     // det(p_0 + o n_0, p_1 + o n_1, p_2 + o n_2). One pass gathers the four coefficients of
     // every component, and Newton's method on each cubic finds its offset to round-off
     // without touching the mesh again.
-    const TriMesh &mesh = edit.mesh();
     const int32_t n = mesh.num_vertices(), count = static_cast<int32_t>(volume.size());
-    std::vector<Vec3> normal(n, Vec3::Zero());
+    ComponentOffsets result{std::vector<Vec3>(n, Vec3::Zero()), std::vector<double>(count, 0),
+                            std::vector<double>(count, 0)};
+    std::vector<Vec3> &normal = result.normal;
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < n; ++v)
-        if (rank[v] == 0 && closed[label[v]])
+        if (movable[v])
             normal[v] = volume_gradient(mesh, v).normalized();
     // About each component's centre (as component_volumes): the cubic's coefficients then
     // keep the digits the coordinates give the shape, wherever the component lies.
@@ -128,52 +136,113 @@ VolumeRestoration restore_enclosed_volumes(MeshEdit &edit, const std::vector<int
             return Eigen::Vector4d(det(p0, p1, p2), det(n0, p1, p2) + det(p0, n1, p2) + det(p0, p1, n2),
                                    det(p0, n1, n2) + det(n0, p1, n2) + det(n0, n1, p2), det(n0, n1, n2));
         });
-    VolumeRestoration result;
-    std::vector<double> offset(count, 0), change(count, 0);
     for (int32_t c = 0; c < count; ++c) {
         if (!closed[c])
             continue;
         const Eigen::Vector4d &k = coefficients[c];
-        change[c] = std::abs(6 * volume[c] - k[0]) / std::abs(6 * volume[c]);
-        result.largest_change = std::max(result.largest_change, change[c]);
-        if (correct && k[1] > 0) // else nothing can move: every vertex is a feature
-            offset[c] = offset_for(k, 6 * volume[c]);
-        else
-            result.largest_left = std::max(result.largest_left, change[c]);
+        result.change[c] = std::abs(6 * volume[c] - k[0]) / std::abs(6 * volume[c]);
+        if (k[1] > 0) // else nothing can move: every vertex is a feature or held
+            result.offset[c] = offset_for(k, 6 * volume[c]);
     }
-    if (!correct || std::all_of(offset.begin(), offset.end(), [](double o) { return o == 0; }))
-        return result;
-    std::vector<Vec3> moved(n);
-#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    return result;
+}
+
+// The faces with a moved corner that the crossing guard sees meet another watched face at
+// `moved`: where the surface nearly touches itself (a fold sharper than the offsets are
+// small), even a tiny offset carries one side through the other.
+std::vector<int32_t> faces_carried_through(const TriMesh &mesh, CrossingGuard &guard, const std::vector<Vec3> &moved)
+{
+    const std::vector<int32_t> &watched = guard.index_faces(mesh, moved);
+    std::vector<char> crossing(watched.size(), 0);
+#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 256)
+    for (size_t i = 0; i < watched.size(); ++i) {
+        const Triangle &t = mesh.tri[watched[i]];
+        const bool moves = moved[t[0]] != mesh.pos[t[0]] || moved[t[1]] != mesh.pos[t[1]] ||
+                           moved[t[2]] != mesh.pos[t[2]];
+        const Vec3 at[3] = {moved[t[0]], moved[t[1]], moved[t[2]]};
+        crossing[i] = moves && guard.crosses(mesh, moved, t, at);
+    }
+    std::vector<int32_t> faces;
+    for (size_t i = 0; i < watched.size(); ++i)
+        if (crossing[i])
+            faces.push_back(watched[i]);
+    return faces;
+}
+
+// How many times the corners of faces the guard stops are held before their whole
+// components are left as they were.
+constexpr int32_t max_holding_rounds = 4;
+
+} // namespace
+
+VolumeRestoration restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank,
+                                           const std::vector<int32_t> &label, const std::vector<double> &volume,
+                                           const std::vector<char> &closed, bool correct, CrossingGuard *guard)
+{
+    const TriMesh &mesh = edit.mesh();
+    const int32_t n = mesh.num_vertices(), count = static_cast<int32_t>(volume.size());
+    // The smooth vertices of closed components move; features do not.
+    std::vector<char> movable(n);
     for (int32_t v = 0; v < n; ++v)
-        moved[v] = offset[label[v]] != 0 ? Vec3(mesh.pos[v] + offset[label[v]] * normal[v]) : mesh.pos[v];
-    // A component whose offset folds a triangle keeps its shape: each round leaves one more
-    // component as it was. Only triangles with a corner the offsets move count: one that was
-    // flat before them is no fold of theirs (and would otherwise cost every component its
-    // correction). A triangle's corners are all of its component, so a component left as
-    // it was is never reported again: there are at most as many rounds as components.
-    std::vector<char> kept(count, 0);
-    for (int32_t folded = first_folded_moved_triangle(mesh, moved); folded >= 0;
-         folded = first_folded_moved_triangle(mesh, moved)) {
-        const int32_t c = label[mesh.tri[folded][0]];
-        if (kept[c]) { // cannot happen (see above); a bound all the same
+        movable[v] = rank[v] == 0 && closed[label[v]];
+    const auto leave_as_it_was = [&](int32_t c) {
+        for (int32_t v = 0; v < n; ++v)
+            if (label[v] == c)
+                movable[v] = 0;
+    };
+    VolumeRestoration result;
+    std::vector<double> change;
+    std::vector<Vec3> moved;
+    // Each round either ends or holds at least one more vertex (the guard's first rounds) or
+    // leaves one more component as it was (the later ones): at most max_holding_rounds +
+    // count + 1 rounds.
+    for (int32_t round = 0;; ++round) {
+        ComponentOffsets offsets = component_offsets(mesh, movable, label, volume, closed);
+        if (round == 0)
+            change = offsets.change; // what the operations did
+        if (!correct || round > max_holding_rounds + count) {
             moved = mesh.pos;
             break;
         }
-        kept[c] = 1;
+        moved.resize(n);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
         for (int32_t v = 0; v < n; ++v)
-            if (label[v] == c)
-                moved[v] = mesh.pos[v];
+            moved[v] = offsets.offset[label[v]] != 0 ? Vec3(mesh.pos[v] + offsets.offset[label[v]] * offsets.normal[v])
+                                                     : mesh.pos[v];
+        // A component whose offset folds a triangle keeps its shape. Only triangles with a
+        // corner the offsets move count: one that was flat before them is no fold of theirs
+        // (and would otherwise cost every component its correction).
+        if (const int32_t folded = first_folded_moved_triangle(mesh, moved); folded >= 0) {
+            leave_as_it_was(label[mesh.tri[folded][0]]);
+            continue;
+        }
+        keep_clear_of_other_sheets(mesh, label, volume, moved);
+        if (!guard)
+            break;
+        const std::vector<int32_t> through = faces_carried_through(mesh, *guard, moved);
+        if (through.empty())
+            break;
+        // Hold the corners of those faces and let the rest of their component take its
+        // volume back; if that does not settle, leave the components as they were.
+        for (const int32_t f : through)
+            if (round < max_holding_rounds)
+                for (const int32_t v : mesh.tri[f])
+                    movable[v] = 0;
+            else
+                leave_as_it_was(label[mesh.tri[f][0]]);
     }
-    keep_clear_of_other_sheets(mesh, label, volume, moved);
-    // The components the safeguards above left as they were keep their change.
+    // What the correction left: everything without it, and the components the safeguards
+    // above left as they were (or where nothing could move).
     std::vector<char> corrected(count, 0);
     for (int32_t v = 0; v < n; ++v)
         if (moved[v] != mesh.pos[v])
             corrected[label[v]] = 1;
     for (int32_t c = 0; c < count; ++c)
-        if (offset[c] != 0 && !corrected[c])
-            result.largest_left = std::max(result.largest_left, change[c]);
+        if (closed[c]) {
+            result.largest_change = std::max(result.largest_change, change[c]);
+            if (!corrected[c])
+                result.largest_left = std::max(result.largest_left, change[c]);
+        }
     edit.offset(moved);
     return result;
 }

@@ -2,6 +2,7 @@
 // Keeping the enclosed volume of every closed component (bubble, drop) on its own.
 #pragma once
 
+#include "geometry/crossing_guard.hpp"
 #include "mesh/mesh_edit.hpp"
 
 #include <cstdint>
@@ -22,8 +23,12 @@ std::vector<double> component_volumes(const TriMesh &mesh, const std::vector<int
 // smallest change of shape that gives it back, and no volume moves from one component to
 // another. Features do not move; open components are not corrected. The volume is an
 // exact cubic in the offset, solved by Newton's method, so the result is exact to
-// round-off; a component whose offset would fold a triangle is left as it is. With
-// `correct` false, nothing moves. The vertices move through `edit` (MeshEdit::offset).
+// round-off; a component whose offset would fold a triangle is left as it is. With a
+// crossing guard, the corners of a face the offset would carry through a watched face are
+// held and the rest of the component takes the volume back (a few rounds; then the
+// component is left as it is): at a fold sharper than the offset is small, the two sides
+// can be nearer than the offset. With `correct` false, nothing moves. The vertices move
+// through `edit` (MeshEdit::offset); a guard is left indexed at the new positions.
 // Returns, as relative volume changes |V - volume[c]| / |volume[c]| of closed components:
 struct VolumeRestoration {
     // the largest before the correction: how far the operations themselves came from
@@ -36,6 +41,7 @@ struct VolumeRestoration {
 };
 VolumeRestoration restore_enclosed_volumes(MeshEdit &edit, const std::vector<int8_t> &rank,
                                            const std::vector<int32_t> &label, const std::vector<double> &volume,
-                                           const std::vector<char> &closed, bool correct);
+                                           const std::vector<char> &closed, bool correct,
+                                           CrossingGuard *guard = nullptr);
 
 } // namespace sfa
