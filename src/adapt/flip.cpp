@@ -16,6 +16,11 @@ namespace {
 // frames differ slightly (seen on fandisk: cycles of 1-3 edges with gains of 1e-5 to 2e-4).
 constexpr double delaunay_slack = 1e-3;
 
+// The least ratio of a triangle's area in the metric's plane to its area times the metric's
+// area scale (the cosine of the tilt between the frame and the triangle) for the flip
+// criterion to be read in that plane: a tilt of up to 75 degrees.
+constexpr double min_projected_share = 0.25;
+
 struct Verdict {
     bool flip;
     double max_opposite_angle;
@@ -87,8 +92,13 @@ Verdict judge(const TriMesh &mesh, int32_t h, const std::vector<Mat3> &quadric, 
     const Eigen::Vector2d ma = to_metric_space * (a - centroid), mb = to_metric_space * (b - centroid),
                           mp = to_metric_space * (p - centroid), mq = to_metric_space * (q - centroid);
     // The criterion means something only where the projection keeps both triangles'
-    // orientation (near a ridge the summed frame can be steep to the quad).
-    if (!(cross2(mb - ma, mp - ma) > 0) || !(cross2(ma - mb, mq - mb) > 0))
+    // orientation and a fair share of their area (near a ridge the summed frame can be
+    // steep to the quad). A frame nearly square to it maps the corners almost onto a line,
+    // where the angles are round-off: a split's midpoint a of an edge pq then looked like
+    // a Delaunay flip back to pq, which made (q, p, a) of zero area (a soak finding).
+    const double metric_area = std::sqrt(metric.m_major * metric.m_minor);
+    if (!(cross2(mb - ma, mp - ma) > min_projected_share * metric_area * old0.norm()) ||
+        !(cross2(ma - mb, mq - mb) > min_projected_share * metric_area * old1.norm()))
         return keep;
     // Two acute opposite angles sum to less than pi: most edges are settled without an arc
     // tangent.
