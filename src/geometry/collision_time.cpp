@@ -17,11 +17,36 @@ struct PairMotion {
     Vec3 x[6], v[6];
 };
 
+// For two triangles that touch along n within round-off (their corners' speeds w along n;
+// `lower` as in time_across): there is no gap to share, and the pair may move only as long
+// as no corner crosses the plane towards the other triangle by more than the round-off. A
+// pair that slides along the plane or opens moves on; one that closes is held (a cone
+// smoothed until two faces touched 8e-15 apart, then moved into each other, crossed).
+double time_touching(const double (&w)[6], double plane_speed, int lower, double roundoff,
+                     double &gap, double &closing)
+{
+    double time = std::numeric_limits<double>::infinity(), rise = 0, fall = 0;
+    for (int k = 0; k < 6; ++k) {
+        const double relative = w[k] - plane_speed;
+        const bool below = (k < 3) == (lower == 0);
+        if (below && relative > 0) {
+            time = std::min(time, roundoff / relative);
+            rise = std::max(rise, relative);
+        } else if (!below && relative < 0) {
+            time = std::min(time, -roundoff / relative);
+            fall = std::max(fall, -relative);
+        }
+    }
+    gap = 0;
+    closing = rise + fall;
+    return time;
+}
+
 // The time the pair may move while a plane of normal n, moving along n with the mean
 // speed of the six corners, stays between them, each triangle's corners taking at most a
 // quarter of the gap (the plane moving, a sheet carried along as a whole is not held
-// back); 0 if n does not separate them at the start (beyond round-off). `gap` and
-// `closing` are set when it does.
+// back); if they touch along n within round-off, time_touching's time; 0 if n does not
+// separate them at the start. `gap` and `closing` are set unless it returns 0.
 double time_across(const PairMotion &m, const Vec3 &n, double &gap, double &closing)
 {
     double p[6], w[6], scale = 0, plane_speed = 0;
@@ -42,6 +67,11 @@ double time_across(const PairMotion &m, const Vec3 &n, double &gap, double &clos
     } else if (hi_b + roundoff < lo_a) {
         lower = 1;
         gap = lo_a - hi_b;
+    } else if (std::max(lo_b - hi_a, lo_a - hi_b) >= -roundoff) {
+        const double time =
+            time_touching(w, plane_speed, lo_b - hi_a >= lo_a - hi_b ? 0 : 1, roundoff, gap, closing);
+        closing /= n.norm();
+        return time;
     } else {
         return 0;
     }

@@ -36,8 +36,9 @@ struct Approach {
 // that share no vertex come closer than half their start separation, certified either
 // across a plane that separates them (each may take a quarter of the gap) or, for a pair
 // that plane would stop early, by measuring their distance as they move (additive
-// continuous collision detection, collision_time.cpp). Pairs that already meet
-// or touch at the start have no such plane and are not limited. The pairs are found by
+// continuous collision detection, collision_time.cpp). A pair that touches at the start
+// (within round-off) may slide along its plane of contact or open, not close; pairs that
+// already meet have no such plane and are not limited. The pairs are found by
 // their swept boxes over [0, dt] (box_pairs.hpp); the result does not depend on the
 // number of threads.
 Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt);

@@ -194,7 +194,7 @@ typedef struct run {
     int calls;
     double time;          /* of the periodic flows */
     double call_limit;    /* seconds */
-    const char *dump;     /* replay: write the mesh before each call to DUMP-N.obj */
+    const char *dump;     /* replay: write the mesh before each call to DUMP-N.obj, velocities to DUMP-N.vel */
     /* What was true just before the current call. */
     snapshot snap;
     view before;
@@ -224,6 +224,24 @@ static void call_begin(run *r, const char *op, const char *fmt, ...)
     }
     r->crossings_before = crossings(r->s);
     r->t0 = now();
+}
+
+/* Replay with --dump: the velocities a "velocities" call sets, to DUMP-N.vel (one vertex's
+ * x y z per line), beside the mesh in DUMP-N.obj. */
+static void dump_velocities(const run *r, int32_t nv, const double *vel)
+{
+    if (!r->dump)
+        return;
+    char path[1024];
+    snprintf(path, sizeof path, "%s-%d.vel", r->dump, r->calls);
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        fprintf(stderr, "soak: cannot write %s\n", path);
+        return;
+    }
+    for (int32_t v = 0; v < nv; ++v)
+        fprintf(f, "%.17g %.17g %.17g\n", vel[3 * v], vel[3 * v + 1], vel[3 * v + 2]);
+    fclose(f);
 }
 
 /* The contract (contract.h), the statuses the call documents, the time it took and the
@@ -346,6 +364,7 @@ static void op_motion(run *r, int advect)
             free(tris);
             soak_flow_eval(&f, nv, xyz, r->time, vel);
             call_begin(r, "velocities", "flow=%s t=%.17g", soak_flow_name(f.kind), r->time);
+            dump_velocities(r, nv, vel);
             call_end(r, sfa_set_velocities_checked(r->s, nv, vel), 0);
             call_release(r);
             free(xyz);
@@ -790,7 +809,8 @@ static int usage(const char *self)
 {
     fprintf(stderr,
             "usage: %s --seconds N [--seed S] [--iterations K] [--call-limit SECONDS]\n"
-            "       %s --seed S --replay [--dump PREFIX]   (PREFIX-N.obj: the mesh before call N)\n",
+            "       %s --seed S --replay [--dump PREFIX]   (PREFIX-N.obj: the mesh before call N;\n"
+            "                                            PREFIX-N.vel: the velocities call N sets)\n",
             self, self);
     return 2;
 }
