@@ -46,6 +46,7 @@ public:
         // Where the surface is thinner than an edge, no step may carry it through itself.
         if (settings.crossing_guard) {
             guard_ = timed(seconds_.analysis, [&] { return CrossingGuard(near_facing_sheet(mesh)); });
+            guard_.watch_features(features_.ranks());
             edit_.attach(guard_listener_);
         }
     }

@@ -36,6 +36,8 @@ SmoothResult smooth_surface(TriMesh &mesh, SurfaceData &data, const SmoothSettin
             analyze_surface(mesh, settings.features, settings.metric, analysis);
             constraints.impose_on(analysis.features.rank);
         });
+        if (settings.crossing_guard)
+            guard.watch_features(analysis.features.rank);
         PhaseClock clock(seconds.smoothing);
         std::vector<Vec3> moved =
             smoothing_sweep(mesh, analysis, settings.denoise, settings.crossing_guard ? &guard : nullptr);

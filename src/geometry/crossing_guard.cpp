@@ -96,6 +96,13 @@ std::vector<char> near_facing_sheet(const TriMesh &mesh)
     return watched;
 }
 
+void CrossingGuard::watch_features(const std::vector<int8_t> &rank)
+{
+    for (size_t v = 0; v < watched_.size(); ++v)
+        if (rank[v] > 0)
+            watched_[v] = 1;
+}
+
 void CrossingGuard::renumber(const std::vector<int32_t> &vertex_map)
 {
     std::vector<char> watched(vertex_map.size() - std::count(vertex_map.begin(), vertex_map.end(), -1), 0);

@@ -35,6 +35,13 @@ public:
     const std::vector<char> &watched() const { return watched_; }
     bool watches_any(const Triangle &t) const { return watches(t[0]) || watches(t[1]) || watches(t[2]); }
     void add_vertex(bool watched) { watched_.push_back(watched); }
+    // Also watches every ridge and corner vertex (rank > 0). There the surface bends so
+    // sharply that two faces a hop apart, sharing no vertex, meet at an angle, and moving a
+    // ridge vertex along its ridge can carry one through the other; the fold checks, made
+    // for smooth corners, do not see it (a soak finding: a crumpled sphere's ridges, faces
+    // 77 degrees apart, crossed in a smoothing sweep of sfa_adapt). Costs little: ridges
+    // are few on a flow, and on a CAD model the guard's queries there are cheap.
+    void watch_features(const std::vector<int8_t> &rank);
     // vertex_map[v] is v's new number, or -1 if v is gone.
     void renumber(const std::vector<int32_t> &vertex_map);
 

@@ -5,12 +5,14 @@
  *
  *   soak --seconds N [--seed S] [--iterations K] [--call-limit SECONDS]
  *   soak --seed S --replay
+ *   soak --seeds FILE
  *
  * Each iteration (one surface and its calls) is drawn from its own seed and runs in a
  * child process: a crash or a hang in the library then costs that iteration alone, and is
  * reported with the seed that replays it (`--seed S --replay` runs that one iteration in
  * this process, printing every call). The parent never calls the library, so forking
- * does not meet OpenMP's thread pool.
+ * does not meet OpenMP's thread pool. `--seeds FILE` runs the iterations of the seeds in
+ * FILE (tests/soak/fixed_seeds: the findings since mended, which `make check` replays).
  *
  * What is checked after every call, and where the header promises it:
  *  - the contract (tests/fuzz/contract.h, as the fuzzers check it): a status the header
@@ -822,8 +824,9 @@ static int usage(const char *self)
     fprintf(stderr,
             "usage: %s --seconds N [--seed S] [--iterations K] [--call-limit SECONDS]\n"
             "       %s --seed S --replay [--dump PREFIX]   (PREFIX-N.obj: the mesh before call N;\n"
-            "                                            PREFIX-N.vel: the velocities call N sets)\n",
-            self, self);
+            "                                            PREFIX-N.vel: the velocities call N sets)\n"
+            "       %s --seeds FILE   (the iterations whose seeds begin FILE's lines, each checked)\n",
+            self, self, self);
     return 2;
 }
 
@@ -833,7 +836,7 @@ int main(int argc, char **argv)
     uint64_t seed = 1;
     long iterations = -1;
     int replay = 0;
-    const char *dump = NULL;
+    const char *dump = NULL, *seeds_file = NULL;
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--seconds") == 0 && i + 1 < argc)
             seconds = atof(argv[++i]);
@@ -847,6 +850,8 @@ int main(int argc, char **argv)
             dump = argv[++i];
         else if (strcmp(argv[i], "--replay") == 0)
             replay = 1;
+        else if (strcmp(argv[i], "--seeds") == 0 && i + 1 < argc)
+            seeds_file = argv[++i];
         else
             return usage(argv[0]);
     }
@@ -855,15 +860,35 @@ int main(int argc, char **argv)
         run_iteration(seed, call_limit, dump);
         return 0;
     }
-    /* Iteration k of the run with seed S has its own seed, S * 10^6 + k: what a finding
-     * prints and --replay takes. */
     totals tot;
     memset(&tot, 0, sizeof tot);
     const double start = now();
-    for (long k = 0; k < 100000000L && (iterations < 0 || k < iterations); ++k) {
-        if (iterations < 0 && now() - start >= seconds)
-            break;
-        run_child(&tot, seed * 1000000u + (uint64_t)k, call_limit, argv[0]);
+    if (seeds_file) {
+        /* The iterations of these seeds, each as the run that found it ran it. Read before
+         * the first fork: a child's exit would move the shared file offset under the
+         * parent's buffered reading. */
+        FILE *f = fopen(seeds_file, "r");
+        FUZZ_REQUIRE(f != NULL, "cannot read %s", seeds_file);
+        uint64_t listed[256];
+        int count = 0;
+        char line[512];
+        while (count < 256 && fgets(line, sizeof line, f)) {
+            char *end;
+            const uint64_t s = strtoull(line, &end, 10);
+            if (end != line)
+                listed[count++] = s;
+        }
+        fclose(f);
+        for (int k = 0; k < count; ++k)
+            run_child(&tot, listed[k], call_limit, argv[0]);
+    } else {
+        /* Iteration k of the run with seed S has its own seed, S * 10^6 + k: what a
+         * finding prints and --replay takes. */
+        for (long k = 0; k < 100000000L && (iterations < 0 || k < iterations); ++k) {
+            if (iterations < 0 && now() - start >= seconds)
+                break;
+            run_child(&tot, seed * 1000000u + (uint64_t)k, call_limit, argv[0]);
+        }
     }
     print_json(&tot, seed, now() - start);
     long total = 0;
