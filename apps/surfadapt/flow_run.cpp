@@ -145,6 +145,26 @@ int run_flow(const FlowRun &run, FlowResult &result)
         return 1;
     }
 
+    // A call failed: the surface is as it was before it (the library loses nothing), so it
+    // goes to the checkpoints as DIR/failed-t<time>.obj, to look at or --resume from.
+    const auto stop = [&](const char *what, double t) {
+        if (!run.checkpoint_dir.empty() && ensure_directory(run.checkpoint_dir)) {
+            const std::string message = std::string(what) + ": " + sfa_last_error(s);
+            char name[64];
+            std::snprintf(name, sizeof name, "/failed-t%.6g.obj", t);
+            const Checkpoint info{run.flow, run.period, t, {run.centre[0], run.centre[1], run.centre[2]}, run.radius};
+            std::string unsaved;
+            if (save_checkpoint(s, info, run.checkpoint_dir + name, unsaved))
+                std::fprintf(stderr, "surfadapt: the surface before the failed call: %s%s\n", run.checkpoint_dir.c_str(),
+                             name);
+            else
+                std::fprintf(stderr, "surfadapt: %s\n", unsaved.c_str());
+            std::fprintf(stderr, "surfadapt: %s\n", message.c_str());
+            sfa_destroy(s);
+            return 1;
+        }
+        return fail(s, what);
+    };
     Progress progress;
     // With topology change, each event as it happens.
     const auto adapt = [&](double t) {
@@ -176,14 +196,14 @@ int run_flow(const FlowRun &run, FlowResult &result)
         while (t < t_end - 1e-12 * run.dt) {
             double taken = 0;
             if (sfa_advect(s, run.velocity, &flow, t, t_end - t, &taken) != SFA_OK)
-                return fail(s, "sfa_advect");
+                return stop("sfa_advect", t);
             t += taken;
             ++substeps;
             ++result.advect_calls;
             // Collision-safe motion cuts the step where two sheets close in: adapting lets
             // them merge, instead of creeping toward each other in ever smaller steps.
             if (run.topology_change && taken < 0.5 * (t_end - t + taken) && !adapt(t))
-                return fail(s, "sfa_adapt");
+                return stop("sfa_adapt", t);
         }
         t = t_end;
         result.advect_seconds += since(phase);
@@ -192,11 +212,11 @@ int run_flow(const FlowRun &run, FlowResult &result)
         // adaptation smooths too (sfa_adapt's sweeps), so a step adapted is not smoothed again.
         if (run.adapt_every > 0 && (step % run.adapt_every == 0 || substeps > 2)) {
             if (!adapt(t))
-                return fail(s, "sfa_adapt");
+                return stop("sfa_adapt", t);
             result.adapt_seconds += since(phase);
         } else if (run.smoothing) {
             if (sfa_smooth(s, 1) != SFA_OK)
-                return fail(s, "sfa_smooth");
+                return stop("sfa_smooth", t);
             result.smooth_seconds += since(phase);
         }
         result.seconds = since(start);

@@ -872,11 +872,13 @@ int main(int argc, char **argv)
         uint64_t listed[256];
         int count = 0;
         char line[512];
-        while (count < 256 && fgets(line, sizeof line, f)) {
+        while (fgets(line, sizeof line, f)) {
             char *end;
             const uint64_t s = strtoull(line, &end, 10);
-            if (end != line)
-                listed[count++] = s;
+            if (end == line)
+                continue;
+            FUZZ_REQUIRE(count < 256, "%s lists more than 256 seeds", seeds_file);
+            listed[count++] = s;
         }
         fclose(f);
         for (int k = 0; k < count; ++k)
