@@ -168,6 +168,19 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
     const auto moves = [&](const Triangle &t) {
         return motion[t[0]] != Vec3::Zero() || motion[t[1]] != Vec3::Zero() || motion[t[2]] != Vec3::Zero();
     };
+    // The guard's first round indexes every watched face where the sweep would put it and
+    // asks each one that moves; a later round asks only the faces with a corner stopped
+    // since, entered again where they now are: a pair of faces neither of which changed did
+    // not meet before and does not now. (Asking all of them again, a fuzz input took 50
+    // rounds over 52,000 watched faces per sweep: 56 s in the sanitizer build.)
+    std::vector<int32_t> stopped_since, asked_in_round;
+    const auto stop = [&](int32_t v) {
+        if (motion[v] != Vec3::Zero()) {
+            motion[v] = Vec3::Zero();
+            stopped_since.push_back(v);
+        }
+    };
+    std::vector<int32_t> asked;
     for (int32_t round = 0;; ++round) {
         if (round > n + 1) // cannot happen (see above); a bound all the same, not a hang
             throw Error(Status::internal, "the smoothing sweep's fold re-check did not settle");
@@ -177,27 +190,39 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
         const int32_t folded = first_folded_or_turned(mesh, analysis, moved);
         if (folded >= 0) {
             for (int32_t v : mesh.tri[folded])
-                motion[v] = Vec3::Zero();
+                stop(v);
             continue;
         }
         if (!guard)
             return moved;
-        const std::vector<int32_t> &watched = guard->index_faces(mesh, moved);
-        std::vector<char> crossing(watched.size(), 0);
+        if (asked_in_round.empty()) {
+            asked = guard->index_faces(mesh, moved);
+            asked_in_round.assign(mesh.num_triangles(), -1);
+        } else {
+            asked.clear();
+            for (const int32_t v : stopped_since)
+                mesh.for_each_outgoing(v, [&](int32_t h) {
+                    const int32_t f = TriMesh::face(h);
+                    if (asked_in_round[f] == round || !guard->watches_any(mesh.tri[f]))
+                        return;
+                    asked_in_round[f] = round;
+                    guard->refresh(mesh, moved, f);
+                    asked.push_back(f);
+                });
+        }
+        stopped_since.clear();
+        std::vector<char> crossing(asked.size(), 0);
 #pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 256)
-        for (size_t i = 0; i < watched.size(); ++i) {
-            const Triangle &t = mesh.tri[watched[i]];
+        for (size_t i = 0; i < asked.size(); ++i) {
+            const Triangle &t = mesh.tri[asked[i]];
             const Vec3 at[3] = {moved[t[0]], moved[t[1]], moved[t[2]]};
             crossing[i] = moves(t) && guard->crosses(mesh, moved, t, at);
         }
-        bool stopped = false;
-        for (size_t i = 0; i < watched.size(); ++i)
-            if (crossing[i]) {
-                for (int32_t v : mesh.tri[watched[i]])
-                    motion[v] = Vec3::Zero();
-                stopped = true;
-            }
-        if (!stopped)
+        for (size_t i = 0; i < asked.size(); ++i)
+            if (crossing[i])
+                for (int32_t v : mesh.tri[asked[i]])
+                    stop(v);
+        if (stopped_since.empty())
             return moved;
     }
 }
