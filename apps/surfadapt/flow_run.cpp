@@ -126,18 +126,22 @@ int run_flow(const FlowRun &run, FlowResult &result)
         error = message;
         return false;
     };
+    // The surface at time t to DIR/NAME (NAME begins with '/'), where DIR is the checkpoints'.
+    const auto write_checkpoint = [&](const std::string &name, double t, std::string &why) {
+        if (!ensure_directory(run.checkpoint_dir)) {
+            why = "cannot create " + run.checkpoint_dir;
+            return false;
+        }
+        const Checkpoint info{run.flow, run.period, t, {run.centre[0], run.centre[1], run.centre[2]}, run.radius};
+        return save_checkpoint(s, info, run.checkpoint_dir + name, why);
+    };
     // At t = 0 and every quarter period, when the steps divide into quarters.
     const auto save = [&](int step, double t) {
         if (run.checkpoint_dir.empty() || (4 * step) % std::max(run.steps, 1) != 0)
             return true;
-        if (!ensure_directory(run.checkpoint_dir)) {
-            error = "cannot create " + run.checkpoint_dir;
-            return false;
-        }
         char name[64];
         std::snprintf(name, sizeof name, "/t%g.obj", t);
-        const Checkpoint info{run.flow, run.period, t, {run.centre[0], run.centre[1], run.centre[2]}, run.radius};
-        return save_checkpoint(s, info, run.checkpoint_dir + name, error);
+        return write_checkpoint(name, t, error);
     };
     if (!report(first_step, t_start) || !save(first_step, t_start)) {
         std::fprintf(stderr, "surfadapt: %s\n", error.c_str());
@@ -148,13 +152,12 @@ int run_flow(const FlowRun &run, FlowResult &result)
     // A call failed: the surface is as it was before it (the library loses nothing), so it
     // goes to the checkpoints as DIR/failed-t<time>.obj, to look at or --resume from.
     const auto stop = [&](const char *what, double t) {
-        if (!run.checkpoint_dir.empty() && ensure_directory(run.checkpoint_dir)) {
+        if (!run.checkpoint_dir.empty()) {
             const std::string message = std::string(what) + ": " + sfa_last_error(s);
             char name[64];
             std::snprintf(name, sizeof name, "/failed-t%.6g.obj", t);
-            const Checkpoint info{run.flow, run.period, t, {run.centre[0], run.centre[1], run.centre[2]}, run.radius};
             std::string unsaved;
-            if (save_checkpoint(s, info, run.checkpoint_dir + name, unsaved))
+            if (write_checkpoint(name, t, unsaved))
                 std::fprintf(stderr, "surfadapt: the surface before the failed call: %s%s\n", run.checkpoint_dir.c_str(),
                              name);
             else
