@@ -242,7 +242,7 @@ enum sfa_param {
         takes 1.7 times as long and the vortex run with T = 2 1.9 times. 0: motion is cut only against folding. Off by
         default for that cost, and because without topology change a flow that brings two
         sheets together (the vortex flow with T = 6) would stop there.
-        ::SFA_PARAM_TOPOLOGY_CHANGE turns it on as well.
+        ::SFA_PARAM_TOPOLOGY_CHANGE turns it on as well, and adds contact: see there.
         A flag, 0 or 1; default 0. */
     SFA_PARAM_COLLISION_SAFE_MOTION = 24,
     /** 1: the surface may change its topology, as bubbles coalesce and drops break up.
@@ -261,7 +261,13 @@ enum sfa_param {
         adaptation that follows
         shapes the new triangles. Motion (sfa_move(), sfa_advect()) is then collision-safe
         as with ::SFA_PARAM_COLLISION_SAFE_MOTION, so that sheets meet here instead of
-        passing through each other. ::SFA_MEASURE_MERGES, ::SFA_MEASURE_PINCHES and
+        passing through each other, with contact: two triangles that would stop the step
+        while closer than a hundredth of their size (sheets not merged, such as a sheet
+        folded flat onto itself, its layers too few triangles apart for a tube) are in
+        contact, and instead of cutting the step their corners move together, each group
+        of corners that contacts join taking the mean of its velocities (an inelastic
+        impact zone). The step is cut only as far as the other pairs and the fold control
+        require. ::SFA_MEASURE_MERGES, ::SFA_MEASURE_PINCHES and
         ::SFA_MEASURE_TOPOLOGY_VOLUME_CHANGE tell what the last call did; the components
         (sfa_get_components()) tell which bubbles became which, and the vertex origins
         (sfa_get_vertex_origins()) where each vertex came from. 0: the topology never

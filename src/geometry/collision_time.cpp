@@ -226,7 +226,8 @@ bool earlier(const Approach &a, const Approach &b)
 
 } // namespace
 
-Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt)
+Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double contact_gap,
+                        std::vector<Approach> *contacts)
 {
     Approach first;
     first.time = dt;
@@ -257,6 +258,7 @@ Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, 
         return first;
 
     std::vector<Approach> per_thread(static_cast<size_t>(loop_threads()), first);
+    std::vector<std::vector<Approach>> touching(per_thread.size());
     for_each_overlapping_pair(swept, cell, [&](int32_t s, int32_t t) {
         Approach &mine = per_thread[static_cast<size_t>(thread_index())];
         const Triangle &p = mesh.tri[s], &q = mesh.tri[t];
@@ -271,22 +273,34 @@ Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, 
             m.x[3 + k] = mesh.pos[q[k]];
             m.v[3 + k] = velocity[q[k]];
         }
-        Approach pair = pair_approach(m, mine.time);
+        // A contact is sought over the whole step, the first approach before the first yet.
+        const double limit = contacts ? dt : mine.time;
+        Approach pair = pair_approach(m, limit);
         if (pair.time == 0)
             return; // they meet or touch already: no plane separates them
-        if (pair.time < mine.time) // the pair would limit the step: measure it more closely
-            pair.time = std::max(pair.time, additive_time(m, mine.time));
+        if (pair.time < limit) // the pair would limit the step: measure it more closely
+            pair.time = std::max(pair.time, additive_time(m, limit));
         pair.first = s;
         pair.second = t;
         for (int k = 0; k < 3; ++k)
             pair.size = std::max({pair.size, (m.x[(k + 1) % 3] - m.x[k]).norm(),
                                   (m.x[3 + (k + 1) % 3] - m.x[3 + k]).norm()});
-        if (earlier(pair, mine))
+        if (contacts && pair.time < dt && pair.gap < contact_gap * pair.size)
+            touching[static_cast<size_t>(thread_index())].push_back(pair);
+        else if (earlier(pair, mine))
             mine = pair;
     });
     for (const Approach &a : per_thread)
         if (earlier(a, first))
             first = a;
+    if (contacts) {
+        contacts->clear();
+        for (const auto &list : touching)
+            contacts->insert(contacts->end(), list.begin(), list.end());
+        std::sort(contacts->begin(), contacts->end(), [](const Approach &a, const Approach &b) {
+            return a.first != b.first ? a.first < b.first : a.second < b.second;
+        });
+    }
     return first;
 }
 

@@ -41,6 +41,11 @@ struct Approach {
 // already meet have no such plane and are not limited. The pairs are found by
 // their swept boxes over [0, dt] (box_pairs.hpp); the result does not depend on the
 // number of threads.
-Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt);
+//
+// With `contacts`, a pair whose separation is below contact_gap times its size and that
+// would limit the step is appended to it (sorted by its triangles) instead of limiting it:
+// motion/safe_motion moves the two together.
+Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double contact_gap = 0,
+                        std::vector<Approach> *contacts = nullptr);
 
 } // namespace sfa

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <numeric>
 
 namespace sfa {
 namespace {
@@ -33,24 +34,72 @@ std::vector<Vec3> mean_velocity(const TriMesh &mesh, const Step &step)
     return velocity;
 }
 
+int32_t zone_of(std::vector<int32_t> &parent, int32_t v)
+{
+    while (parent[v] != v)
+        v = parent[v] = parent[parent[v]];
+    return v;
+}
+
+// Joins the corners of every pair in contact over dt into zones, each moving with the mean
+// velocity of its corners, until no pair is in contact (at most max_contact_rounds rounds;
+// every round joins two zones at least, for a pair within one zone does not move relative
+// to itself). Returns the first approach of the rest, the contacts left after the last
+// round among them.
+Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity, double dt)
+{
+    const std::vector<Vec3> own = velocity;
+    std::vector<int32_t> parent(own.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    std::vector<Approach> contacts;
+    for (int round = 0; round < max_contact_rounds; ++round) {
+        const Approach first = first_approach(mesh, velocity, dt, contact_gap_ratio, &contacts);
+        if (contacts.empty())
+            return first;
+        for (const Approach &c : contacts) {
+            const Triangle &p = mesh.tri[c.first], &q = mesh.tri[c.second];
+            const int32_t root = zone_of(parent, p[0]);
+            for (int32_t v : {p[1], p[2], q[0], q[1], q[2]})
+                parent[zone_of(parent, v)] = root;
+        }
+        // The sums in vertex order: the same zones give the same velocities on any threads.
+        std::vector<Vec3> sum(own.size(), Vec3::Zero());
+        std::vector<int32_t> count(own.size(), 0);
+        for (size_t v = 0; v < own.size(); ++v) {
+            const int32_t z = zone_of(parent, static_cast<int32_t>(v));
+            sum[z] += own[v];
+            ++count[z];
+        }
+        for (size_t v = 0; v < own.size(); ++v) {
+            const int32_t z = zone_of(parent, static_cast<int32_t>(v));
+            velocity[v] = sum[z] / count[z];
+        }
+    }
+    return first_approach(mesh, velocity, dt);
+}
+
 } // namespace
 
 Step collision_safe_explicit_step(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double safety,
-                                  int32_t index_base)
+                                  int32_t index_base, bool contact)
 {
     Step step = explicit_step(mesh, velocity, dt, safety, index_base);
-    const Approach a = first_approach(mesh, velocity, step.dt_taken);
+    std::vector<Vec3> moving = velocity;
+    const Approach a = contact ? move_contacts_together(mesh, moving, step.dt_taken)
+                               : first_approach(mesh, moving, step.dt_taken);
+    if (moving != velocity) // zones moving as one may fold a triangle between them and the rest
+        step = explicit_step(mesh, moving, step.dt_taken, safety, index_base);
     if (a.time >= step.dt_taken)
         return step;
     require_room(a, "at the start of the step", index_base);
     step.dt_taken = a.time;
-    step.positions = displaced(mesh.pos, velocity, step.dt_taken);
+    step.positions = displaced(mesh.pos, moving, step.dt_taken);
     require_valid_step(mesh, step.positions, step.dt_taken, index_base);
     return step;
 }
 
 Step collision_safe_rk4_step(const TriMesh &mesh, const VelocityField &field, double t, double dt, double safety,
-                             int32_t index_base)
+                             int32_t index_base, bool contact)
 {
     // The RK4 mean velocity changes with the step only at higher order, so a step a little
     // shorter than the collision-free time of the last try is nearly always free.
@@ -58,7 +107,19 @@ Step collision_safe_rk4_step(const TriMesh &mesh, const VelocityField &field, do
     double h = dt;
     for (int attempt = 0; attempt < max_tries; ++attempt) {
         Step step = rk4_step(mesh, field, t, h, safety, index_base);
-        const Approach a = first_approach(mesh, mean_velocity(mesh, step), step.dt_taken);
+        const std::vector<Vec3> velocity = mean_velocity(mesh, step);
+        std::vector<Vec3> moving = velocity;
+        const Approach a = contact ? move_contacts_together(mesh, moving, step.dt_taken)
+                                   : first_approach(mesh, moving, step.dt_taken);
+        if (moving != velocity) {
+            // Zones moving as one may fold a triangle sooner: then a shorter Runge-Kutta step.
+            const Step held = explicit_step(mesh, moving, step.dt_taken, safety, index_base);
+            if (held.dt_taken < step.dt_taken) {
+                h = held.dt_taken;
+                continue;
+            }
+            step.positions = held.positions;
+        }
         if (a.time >= step.dt_taken)
             return step;
         char when[40];

@@ -146,6 +146,51 @@ static void advected_drops_never_cross(void **state)
     sfa_destroy(s);
 }
 
+/* With topology change on, sheets that meet and are not merged (here: no sfa_adapt to
+ * merge them) are in contact: their triangles move together instead of stopping the
+ * step, so the host's time goes on and the drops still never cross. */
+static void with_topology_change_touching_drops_move_on_together(void **state)
+{
+    (void)state;
+    sfa_surface *s = two_drops();
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_TOPOLOGY_CHANGE, 1));
+    double moved = 0, crossings = 0;
+    for (int call = 0; call < 30; ++call) {
+        int32_t n = 0;
+        double *vel = toward_each_other(s, &n), dt_taken = 0;
+        assert_ok(s, sfa_set_velocities_checked(s, n, vel));
+        free(vel);
+        assert_ok(s, sfa_move(s, 0.01, &dt_taken));
+        moved += dt_taken;
+        crossings = fmax(crossings, self_intersections(s));
+    }
+    /* Contact at 0.12; without contact the calls after it halve their steps and fail. */
+    print_message("30 calls of 0.01 advanced %.4f\n", moved);
+    assert_true(moved > 0.25);
+    assert_true(crossings == 0);
+    int32_t count = 0;
+    assert_ok(s, sfa_get_component_count(s, &count));
+    assert_int_equal(count, 2);
+    sfa_destroy(s);
+}
+
+static void with_topology_change_advected_drops_move_on_together(void **state)
+{
+    (void)state;
+    sfa_surface *s = two_drops();
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_TOPOLOGY_CHANGE, 1));
+    double t = 0;
+    for (int call = 0; call < 30; ++call) {
+        double dt_taken = 0;
+        assert_ok(s, sfa_advect(s, toward_each_other_by_index, NULL, t, 0.01, &dt_taken));
+        t += dt_taken;
+        assert_true(self_intersections(s) == 0);
+    }
+    print_message("30 calls of 0.01 reached t = %.4f\n", t);
+    assert_true(t > 0.25);
+    sfa_destroy(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -153,6 +198,8 @@ int main(void)
         cmocka_unit_test(without_the_check_the_drops_pass_through_each_other),
         cmocka_unit_test(the_gap_halves_at_most_per_call),
         cmocka_unit_test(advected_drops_never_cross),
+        cmocka_unit_test(with_topology_change_touching_drops_move_on_together),
+        cmocka_unit_test(with_topology_change_advected_drops_move_on_together),
     };
     return cmocka_run_group_tests_name("test_collision_safe_motion", tests, NULL, NULL);
 }
