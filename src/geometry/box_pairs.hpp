@@ -11,6 +11,7 @@
 #include "mesh/parallel.hpp"
 
 #include <array>
+#include <limits>
 #include <vector>
 
 namespace sfa {
@@ -61,6 +62,45 @@ void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit
         for (int32_t t = 0; t < n; ++t)
             if (t != s && !(is_large[t] && t < s) && boxes_overlap(boxes[s], boxes[t]))
                 visit(std::min(s, t), std::max(s, t));
+    }
+}
+
+// Calls visit(s, t), s < t, once for every two overlapping boxes of which one at least is
+// in `some` (distinct indices), from parallel loops: only `some` goes into a grid, and
+// every box asks it, which costs the boxes times the cells each covers instead of every
+// pair of a crowded cell. `cell` as in for_each_overlapping_pair.
+template <class Visit>
+void for_each_overlapping_pair_with(const std::vector<Box> &boxes, const std::vector<int32_t> &some, double cell,
+                                    Visit &&visit)
+{
+    if (some.empty())
+        return;
+    const int32_t n = static_cast<int32_t>(boxes.size());
+    std::vector<char> in_some(static_cast<size_t>(n), 0);
+    Vec3 lowest = Vec3::Constant(std::numeric_limits<double>::infinity());
+    for (int32_t s : some) {
+        in_some[s] = 1;
+        lowest = lowest.cwiseMin(boxes[s][0]); // a NaN corner leaves it as it was
+    }
+    if (!lowest.allFinite())
+        return; // every box of `some` has a NaN corner: they overlap nothing
+    SpatialGrid<int32_t> grid; // entry m is box some[m]
+    grid.build(CellFrame{lowest, cell}, static_cast<int32_t>(some.size()), [&](int32_t m) { return boxes[some[m]]; },
+               [](int32_t m, const GridCell &) { return m; });
+#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 256)
+    for (int32_t t = 0; t < n; ++t) {
+        if (!(boxes[t][0].allFinite() && boxes[t][1].allFinite()))
+            continue;
+        const GridCell first = grid.frame().cell_of(boxes[t][0]), last = grid.frame().cell_of(boxes[t][1]);
+        grid.any_in_cells(first, last, [&](int32_t m, const GridCell &here) {
+            const int32_t s = some[m];
+            // Two of `some` are met from both: counted from the lower. Each in one cell.
+            if (s == t || (in_some[t] && s < t) || !same_cell(first_shared_cell(first, grid.cells_of(m)[0]), here))
+                return false;
+            if (boxes_overlap(boxes[s], boxes[t]))
+                visit(std::min(s, t), std::max(s, t));
+            return false;
+        });
     }
 }
 

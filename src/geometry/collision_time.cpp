@@ -224,10 +224,9 @@ bool earlier(const Approach &a, const Approach &b)
     return a.first != b.first ? a.first < b.first : a.second < b.second;
 }
 
-} // namespace
-
-Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double contact_gap,
-                        std::vector<Approach> *contacts)
+// first_approach and first_approach_with_contacts: `contacts` and `among` may be null.
+Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double contact_gap,
+                           std::vector<Approach> *contacts, const std::vector<int32_t> *among)
 {
     Approach first;
     first.time = dt;
@@ -259,7 +258,7 @@ Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, 
 
     std::vector<Approach> per_thread(static_cast<size_t>(loop_threads()), first);
     std::vector<std::vector<Approach>> touching(per_thread.size());
-    for_each_overlapping_pair(swept, cell, [&](int32_t s, int32_t t) {
+    const auto look_at = [&](int32_t s, int32_t t) {
         Approach &mine = per_thread[static_cast<size_t>(thread_index())];
         const Triangle &p = mesh.tri[s], &q = mesh.tri[t];
         if (share_a_vertex(p, q))
@@ -289,7 +288,11 @@ Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, 
             touching[static_cast<size_t>(thread_index())].push_back(pair);
         else if (earlier(pair, mine))
             mine = pair;
-    });
+    };
+    if (among)
+        for_each_overlapping_pair_with(swept, *among, cell, look_at);
+    else
+        for_each_overlapping_pair(swept, cell, look_at);
     for (const Approach &a : per_thread)
         if (earlier(a, first))
             first = a;
@@ -302,6 +305,20 @@ Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, 
         });
     }
     return first;
+}
+
+} // namespace
+
+Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt)
+{
+    return approach_of_pairs(mesh, velocity, dt, 0, nullptr, nullptr);
+}
+
+Approach first_approach_with_contacts(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt,
+                                      double contact_gap, std::vector<Approach> &contacts,
+                                      const std::vector<int32_t> *among)
+{
+    return approach_of_pairs(mesh, velocity, dt, contact_gap, &contacts, among);
 }
 
 } // namespace sfa

@@ -41,11 +41,14 @@ struct Approach {
 // already meet have no such plane and are not limited. The pairs are found by
 // their swept boxes over [0, dt] (box_pairs.hpp); the result does not depend on the
 // number of threads.
-//
-// With `contacts`, a pair whose separation is below contact_gap times its size and that
-// would limit the step is appended to it (sorted by its triangles) instead of limiting it:
-// motion/safe_motion moves the two together.
-Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double contact_gap = 0,
-                        std::vector<Approach> *contacts = nullptr);
+Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt);
+
+// The same, except that a pair whose separation is below contact_gap times its size and
+// that would limit the step is put into `contacts` (sorted by its triangles) instead of
+// limiting it: motion/safe_motion moves the two together. With `among`, only the pairs of
+// which one triangle at least is in it (distinct triangles) are looked at.
+Approach first_approach_with_contacts(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt,
+                                      double contact_gap, std::vector<Approach> &contacts,
+                                      const std::vector<int32_t> *among = nullptr);
 
 } // namespace sfa

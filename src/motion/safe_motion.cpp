@@ -44,18 +44,21 @@ int32_t zone_of(std::vector<int32_t> &parent, int32_t v)
 // Joins the corners of every pair in contact over dt into zones, each moving with the mean
 // velocity of its corners, until no pair is in contact (at most max_contact_rounds rounds;
 // every round joins two zones at least, for a pair within one zone does not move relative
-// to itself). Returns the first approach of the rest, the contacts left after the last
-// round among them.
+// to itself). A pair none of whose corners changed velocity in the last round is what it
+// was, so a later round looks only at the triangles around the changed corners. Returns
+// the first approach of the rest, the contacts left after the last round among them.
 Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity, double dt)
 {
     const std::vector<Vec3> own = velocity;
     std::vector<int32_t> parent(own.size());
     std::iota(parent.begin(), parent.end(), 0);
     std::vector<Approach> contacts;
+    std::vector<int32_t> changed; // the triangles with a corner whose velocity changed
     for (int round = 0; round < max_contact_rounds; ++round) {
-        const Approach first = first_approach(mesh, velocity, dt, contact_gap_ratio, &contacts);
+        const Approach first =
+            first_approach_with_contacts(mesh, velocity, dt, contact_gap_ratio, contacts, round ? &changed : nullptr);
         if (contacts.empty())
-            return first;
+            return round == 0 ? first : first_approach(mesh, velocity, dt);
         for (const Approach &c : contacts) {
             const Triangle &p = mesh.tri[c.first], &q = mesh.tri[c.second];
             const int32_t root = zone_of(parent, p[0]);
@@ -70,9 +73,18 @@ Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity
             sum[z] += own[v];
             ++count[z];
         }
+        std::vector<char> moved(own.size(), 0);
         for (size_t v = 0; v < own.size(); ++v) {
             const int32_t z = zone_of(parent, static_cast<int32_t>(v));
-            velocity[v] = sum[z] / count[z];
+            const Vec3 zone_velocity = sum[z] / count[z];
+            moved[v] = zone_velocity != velocity[v];
+            velocity[v] = zone_velocity;
+        }
+        changed.clear();
+        for (int32_t f = 0; f < mesh.num_triangles(); ++f) {
+            const Triangle &t = mesh.tri[f];
+            if (moved[t[0]] || moved[t[1]] || moved[t[2]])
+                changed.push_back(f);
         }
     }
     return first_approach(mesh, velocity, dt);

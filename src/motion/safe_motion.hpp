@@ -22,7 +22,7 @@ constexpr double contact_gap_ratio = 1e-2;
 
 // At most this many rounds of joining contacts into zones; contacts left after them limit
 // the step as any other pair.
-constexpr int max_contact_rounds = 16;
+constexpr int max_contact_rounds = 32;
 
 // explicit_step, cut to the collision-free time. Throws Error(Status::numeric) naming the
 // two triangles (numbered from index_base) that stop the step when they are closer than

@@ -5,7 +5,9 @@
 // the points. On random boxes in a compact box (the cells numbered densely), on boxes far
 // apart (the cells hashed, some 2^21 cells apart, so that their keys coincide), on large
 // boxes crowding few buckets, on boxes that all lie in one cell, and with boxes too large
-// to enter in their cells, kept apart.
+// to enter in their cells, kept apart. The pair sweeps of box_pairs.hpp, over all boxes and
+// over the pairs with a box of a subset, find the same pairs as all-pairs tests.
+#include "geometry/box_pairs.hpp"
 #include "geometry/spatial_grid.hpp"
 
 #include <algorithm>
@@ -25,7 +27,6 @@ using namespace sfa;
 
 namespace {
 
-using Box = std::array<Vec3, 2>;
 using Pairs = std::vector<std::pair<int32_t, int32_t>>;
 
 // A fixed sequence of numbers in [0, 1), the same on every machine.
@@ -309,6 +310,54 @@ void cells_of_non_finite_or_far_points_are_clamped(void **)
                                    [](int32_t, const GridCell &) { return true; }));
 }
 
+// The pairs a sweep of box_pairs.hpp reports, gathered from its threads and sorted.
+template <class Sweep>
+Pairs pairs_reported(Sweep &&sweep)
+{
+    std::vector<Pairs> per_thread(static_cast<size_t>(loop_threads()));
+    sweep([&](int32_t s, int32_t t) { per_thread[static_cast<size_t>(thread_index())].push_back({s, t}); });
+    Pairs pairs;
+    for (const Pairs &list : per_thread)
+        pairs.insert(pairs.end(), list.begin(), list.end());
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+// The collision-safe motion's later rounds of contact look only at the pairs of the
+// triangles around moved corners: they must be every overlapping pair with one of them, each
+// once, large boxes and boxes with a NaN corner (which overlap nothing) among them.
+void pairs_with_a_subset_are_all_pairs_with_one_of_it(void **)
+{
+    std::vector<Box> boxes = random_boxes(500, 1.0, 0.2, 8);
+    boxes.push_back({Vec3(0.05, 0.05, 0.05), Vec3(40, 0.1, 0.1)}); // large
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    boxes.push_back({Vec3(nan, 0, 0), Vec3(1, 1, 1)});
+    const int32_t count = static_cast<int32_t>(boxes.size());
+    const Pairs every = all_pairs(boxes);
+    assert_same_pairs(pairs_reported([&](auto visit) { for_each_overlapping_pair(boxes, 0.1, visit); }), every);
+
+    std::vector<std::vector<int32_t>> subsets = {{}, {7}, {count - 2}, {count - 1}, {count - 1, 3}};
+    std::vector<int32_t> every_third, all;
+    for (int32_t m = 0; m < count; ++m) {
+        all.push_back(m);
+        if (m % 3 == 1)
+            every_third.push_back(m);
+    }
+    subsets.push_back(every_third);
+    subsets.push_back(all);
+    for (const std::vector<int32_t> &some : subsets) {
+        std::vector<char> in(static_cast<size_t>(count), 0);
+        for (int32_t m : some)
+            in[m] = 1;
+        Pairs expected;
+        for (const auto &[s, t] : every)
+            if (in[s] || in[t])
+                expected.push_back({s, t});
+        assert_same_pairs(
+            pairs_reported([&](auto visit) { for_each_overlapping_pair_with(boxes, some, 0.1, visit); }), expected);
+    }
+}
+
 } // namespace
 
 int main()
@@ -321,6 +370,7 @@ int main()
         cmocka_unit_test(large_boxes_are_kept_apart_and_still_met),
         cmocka_unit_test(a_query_meets_points_cell_by_cell_in_their_order),
         cmocka_unit_test(cells_of_non_finite_or_far_points_are_clamped),
+        cmocka_unit_test(pairs_with_a_subset_are_all_pairs_with_one_of_it),
     };
     return cmocka_run_group_tests_name("unit_spatial_grid", tests, nullptr, nullptr);
 }
