@@ -10,13 +10,25 @@
 #include "contract.h"
 #include "mesh_formats.h"
 
+static const char *const names[7] = {"fuzz.obj", "fuzz.off", "fuzz.stl", "fuzz.ply",
+                                     "fuzz.mesh", "fuzz.vtk", "fuzz.vtu"};
+/* Inputs per reader, printed when the run ends: the goal is counted reader by reader. */
+static unsigned long long inputs_of[7];
+
+__attribute__((destructor)) static void print_inputs_per_reader(void)
+{
+    fprintf(stderr, "fuzz_reader: inputs per reader:");
+    for (int k = 0; k < 7; ++k)
+        fprintf(stderr, " %s %llu", names[k] + 5, inputs_of[k]);
+    fprintf(stderr, "\n");
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     if (size == 0)
         return 0;
-    static const char *const names[7] = {"fuzz.obj", "fuzz.off", "fuzz.stl", "fuzz.ply",
-                                         "fuzz.mesh", "fuzz.vtk", "fuzz.vtu"};
     const char *name = names[data[0] % 7];
+    ++inputs_of[data[0] % 7];
     char *bytes = malloc(size);
     memcpy(bytes, data + 1, size - 1);
     bytes[size - 1] = '\0';
