@@ -262,7 +262,7 @@ enum sfa_param {
         shapes the new triangles. Motion (sfa_move(), sfa_advect()) is then collision-safe
         as with ::SFA_PARAM_COLLISION_SAFE_MOTION, so that sheets meet here instead of
         passing through each other, with contact: two triangles that would stop the step
-        while closer than a hundredth of their size (sheets not merged, such as a sheet
+        while nearer than a twentieth of their longest edge (sheets not merged, such as a sheet
         folded flat onto itself, its layers too few triangles apart for a tube) are in
         contact, and instead of cutting the step their corners move together, each group
         of corners that contacts join taking the mean of its velocities (an inelastic

@@ -272,8 +272,16 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
             m.x[3 + k] = mesh.pos[q[k]];
             m.v[3 + k] = velocity[q[k]];
         }
-        // A contact is sought over the whole step, the first approach before the first yet.
-        const double limit = contacts ? dt : mine.time;
+        double size = 0;
+        for (int k = 0; k < 3; ++k)
+            size = std::max({size, (m.x[(k + 1) % 3] - m.x[k]).norm(), (m.x[3 + (k + 1) % 3] - m.x[3 + k]).norm()});
+        // A pair nearer than contact_gap of its size may be a contact: it is sought over the
+        // whole step. Any other only matters if it comes before the first approach yet. The
+        // balls' gap is a lower bound of the distance, and rules most pairs out cheaply.
+        const double touch = contact_gap * size;
+        const bool near = contacts && (reach[s].centre - reach[t].centre).norm() - reach[s].radius - reach[t].radius < touch &&
+                          triangle_distance(m.x, m.x + 3) < touch;
+        const double limit = near ? dt : mine.time;
         Approach pair = pair_approach(m, limit);
         if (pair.time == 0)
             return; // they meet or touch already: no plane separates them
@@ -281,10 +289,8 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
             pair.time = std::max(pair.time, additive_time(m, limit));
         pair.first = s;
         pair.second = t;
-        for (int k = 0; k < 3; ++k)
-            pair.size = std::max({pair.size, (m.x[(k + 1) % 3] - m.x[k]).norm(),
-                                  (m.x[3 + (k + 1) % 3] - m.x[3 + k]).norm()});
-        if (contacts && pair.time < dt && pair.gap < contact_gap * pair.size)
+        pair.size = size;
+        if (near && pair.time < dt)
             touching[static_cast<size_t>(thread_index())].push_back(pair);
         else if (earlier(pair, mine))
             mine = pair;

@@ -43,7 +43,7 @@ struct Approach {
 // number of threads.
 Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt);
 
-// The same, except that a pair whose separation is below contact_gap times its size and
+// The same, except that a pair nearer than contact_gap times its size (its longest edge)
 // that would limit the step is put into `contacts` (sorted by its triangles) instead of
 // limiting it: motion/safe_motion moves the two together. With `among`, only the pairs of
 // which one triangle at least is in it (distinct triangles) are looked at.

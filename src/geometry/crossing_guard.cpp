@@ -163,15 +163,16 @@ void CrossingGuard::refresh(const TriMesh &mesh, const std::vector<Vec3> &pos, i
     grid_.add(lo, hi, [&](const GridCell &first) { return FaceEntry{lo, hi, first, f}; });
 }
 
-bool CrossingGuard::crosses(const TriMesh &mesh, const std::vector<Vec3> &pos, const Triangle &corner,
-                            const Vec3 (&at)[3], int32_t also) const
+int32_t CrossingGuard::face_crossed(const TriMesh &mesh, const std::vector<Vec3> &pos, const Triangle &corner,
+                                    const Vec3 (&at)[3], int32_t also) const
 {
     if (grid_.empty())
-        return false;
+        return -1;
     const Vec3 lo = at[0].cwiseMin(at[1]).cwiseMin(at[2]), hi = at[0].cwiseMax(at[1]).cwiseMax(at[2]);
     const GridCell first = grid_.frame().cell_of(lo), last = grid_.frame().cell_of(hi);
     // Entry e, met in cell `here`: true if its face, as it is now, meets the new face.
-    return grid_.any_in_cells(first, last, [&](const FaceEntry &e, const GridCell &here) {
+    int32_t met = -1;
+    grid_.any_in_cells(first, last, [&](const FaceEntry &e, const GridCell &here) {
         if ((e.lo - hi).maxCoeff() > 0 || (lo - e.hi).maxCoeff() > 0)
             return false; // boxes apart
         // Each face once, without a list of those seen.
@@ -183,8 +184,12 @@ bool CrossingGuard::crosses(const TriMesh &mesh, const std::vector<Vec3> &pos, c
         for (int32_t v : t)
             if (v == corner[0] || v == corner[1] || v == corner[2] || v == also)
                 return false; // a neighbour
-        return triangles_intersect(at[0], at[1], at[2], pos[t[0]], pos[t[1]], pos[t[2]]);
+        if (!triangles_intersect(at[0], at[1], at[2], pos[t[0]], pos[t[1]], pos[t[2]]))
+            return false;
+        met = e.face;
+        return true;
     });
+    return met;
 }
 
 } // namespace sfa

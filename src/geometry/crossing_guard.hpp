@@ -56,7 +56,13 @@ public:
     // (-1 for none: a contraction's vanishing end). Allocates nothing, and may be called
     // from parallel loops.
     bool crosses(const TriMesh &mesh, const std::vector<Vec3> &pos, const Triangle &corner, const Vec3 (&at)[3],
-                 int32_t also = -1) const;
+                 int32_t also = -1) const
+    {
+        return face_crossed(mesh, pos, corner, at, also) >= 0;
+    }
+    // The same, naming an indexed face the new face would meet (-1 for none).
+    int32_t face_crossed(const TriMesh &mesh, const std::vector<Vec3> &pos, const Triangle &corner,
+                         const Vec3 (&at)[3], int32_t also = -1) const;
 
 private:
     // A face in a cell, with its box and first cell as they were when it was entered: most

@@ -14,11 +14,13 @@ namespace sfa {
 constexpr double stuck_gap_ratio = 1e-6;
 
 // With contact on (SFA_PARAM_TOPOLOGY_CHANGE), two triangles nearer than this fraction of
-// their size that would limit the step are in contact: sheets that near are one sheet to
-// the mesh, and where sfa_adapt could not merge them (a sheet folded flat onto itself, its
-// two layers a ring or two apart) a cut step would only halve their gap call after call
-// until it failed (vortex T = 6, at t = 5.70, 3.6e-9 apart).
-constexpr double contact_gap_ratio = 1e-2;
+// their longest edge that would limit the step are in contact: sheets that near are one
+// sheet to the mesh, and where sfa_adapt could not merge them (a sheet folded flat onto
+// itself, its two layers a ring or two apart) a cut step would only halve their gap call
+// after call until it failed (vortex T = 6, at t = 5.70, 3.6e-9 apart). At a hundredth,
+// two drops pressed together needed some ten more cut steps for each ring of triangles
+// that came to touch.
+constexpr double contact_gap_ratio = 5e-2;
 
 // At most this many rounds of joining contacts into zones; contacts left after them limit
 // the step as any other pair.

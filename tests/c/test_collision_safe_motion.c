@@ -164,9 +164,11 @@ static void with_topology_change_touching_drops_move_on_together(void **state)
         moved += dt_taken;
         crossings = fmax(crossings, self_intersections(s));
     }
-    /* Contact at 0.12; without contact the calls after it halve their steps and fail. */
+    /* The drops touch at 0.12: without contact the calls after it halve their steps until
+     * one fails, short of 0.12. With it, each ring of triangles that comes to touch cuts a
+     * few steps before it joins the contact, and the rest are whole (0.257). */
     print_message("30 calls of 0.01 advanced %.4f\n", moved);
-    assert_true(moved > 0.25);
+    assert_true(moved > 0.2);
     assert_true(crossings == 0);
     int32_t count = 0;
     assert_ok(s, sfa_get_component_count(s, &count));
@@ -187,7 +189,7 @@ static void with_topology_change_advected_drops_move_on_together(void **state)
         assert_true(self_intersections(s) == 0);
     }
     print_message("30 calls of 0.01 reached t = %.4f\n", t);
-    assert_true(t > 0.25);
+    assert_true(t > 0.2);
     sfa_destroy(s);
 }
 
