@@ -80,8 +80,9 @@ SFA_EXPORT int sfa_move(sfa_surface *s, double dt, double *dt_taken)
         if (s->velocity.empty())
             fail(Status::state, "no velocities have been set (call sfa_set_velocities first)");
         const double safety = s->params.get(Param::fold_safety);
-        Step step = collision_safe(s->params) ? collision_safe_explicit_step(s->mesh, s->velocity, dt, safety, s->index_base,
-                                                                    in_contact(s->params))
+        Step step = collision_safe(s->params)
+                        ? collision_safe_explicit_step(s->mesh, s->velocity, dt, safety, s->index_base,
+                                                       in_contact(s->params))
                         : explicit_step(s->mesh, s->velocity, dt, safety, s->index_base);
         s->mesh.pos.swap(step.positions);
         *dt_taken = step.dt_taken;
@@ -100,8 +101,8 @@ SFA_EXPORT int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t
             f(ctx, n, xyz, time, vel);
         };
         const double safety = s->params.get(Param::fold_safety);
-        Step step = collision_safe(s->params) ? collision_safe_rk4_step(s->mesh, field, t, dt, safety, s->index_base,
-                                                               in_contact(s->params))
+        Step step = collision_safe(s->params)
+                        ? collision_safe_rk4_step(s->mesh, field, t, dt, safety, s->index_base, in_contact(s->params))
                         : rk4_step(s->mesh, field, t, dt, safety, s->index_base);
         s->mesh.pos.swap(step.positions);
         *dt_taken = step.dt_taken;

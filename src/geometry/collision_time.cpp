@@ -279,8 +279,8 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
         // whole step. Any other only matters if it comes before the first approach yet. The
         // balls' gap is a lower bound of the distance, and rules most pairs out cheaply.
         const double touch = contact_gap * size;
-        const bool near = contacts && (reach[s].centre - reach[t].centre).norm() - reach[s].radius - reach[t].radius < touch &&
-                          triangle_distance(m.x, m.x + 3) < touch;
+        const double balls_gap = (reach[s].centre - reach[t].centre).norm() - reach[s].radius - reach[t].radius;
+        const bool near = contacts && balls_gap < touch && triangle_distance(m.x, m.x + 3) < touch;
         const double limit = near ? dt : mine.time;
         Approach pair = pair_approach(m, limit);
         if (pair.time == 0)

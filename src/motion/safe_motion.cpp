@@ -73,17 +73,17 @@ Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity
             sum[z] += own[v];
             ++count[z];
         }
-        std::vector<char> moved(own.size(), 0);
+        std::vector<char> retimed(own.size(), 0); // the corners whose velocity changed
         for (size_t v = 0; v < own.size(); ++v) {
             const int32_t z = zone_of(parent, static_cast<int32_t>(v));
             const Vec3 zone_velocity = sum[z] / count[z];
-            moved[v] = zone_velocity != velocity[v];
+            retimed[v] = zone_velocity != velocity[v];
             velocity[v] = zone_velocity;
         }
         changed.clear();
         for (int32_t f = 0; f < mesh.num_triangles(); ++f) {
             const Triangle &t = mesh.tri[f];
-            if (moved[t[0]] || moved[t[1]] || moved[t[2]])
+            if (retimed[t[0]] || retimed[t[1]] || retimed[t[2]])
                 changed.push_back(f);
         }
     }
