@@ -268,11 +268,13 @@ void SpatialGrid<Item>::build(const CellFrame &frame, int32_t count, BoxOf &&box
     while ((size_t{1} << bits) < static_cast<size_t>(count))
         ++bits;
     // In doubles: the box of a scattered few can have more cells than an integer holds.
+    // Where every thing is large, no cell has an entry, and there is no box to number.
+    const bool any_small = low_[0] <= high_[0];
     const double dense_limit = 8.0 * count + 64;
-    double box_cells = count > 0 ? 1 : 0;
-    for (int a = 0; a < 3 && count > 0; ++a)
+    double box_cells = any_small ? 1 : 0;
+    for (int a = 0; a < 3 && any_small; ++a)
         box_cells *= static_cast<double>(high_[a]) - static_cast<double>(low_[a]) + 1;
-    dense_ = count > 0 && box_cells <= dense_limit;
+    dense_ = any_small && box_cells <= dense_limit;
     size_t buckets;
     if (dense_) {
         for (int a = 0; a < 3; ++a)

@@ -336,6 +336,8 @@ void pairs_with_a_subset_are_all_pairs_with_one_of_it(void **)
     const Pairs every = all_pairs(boxes);
     assert_same_pairs(pairs_reported([&](auto visit) { for_each_overlapping_pair(boxes, 0.1, visit); }), every);
 
+    // Among them a subset of one large box alone: a grid whose cells hold nothing (its
+    // empty box of cells overflowed the dense numbering, caught by UBSan).
     std::vector<std::vector<int32_t>> subsets = {{}, {7}, {count - 2}, {count - 1}, {count - 1, 3}};
     std::vector<int32_t> every_third, all;
     for (int32_t m = 0; m < count; ++m) {
