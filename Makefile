@@ -90,6 +90,11 @@ BENCHES          := $(patsubst bench/%.c,build/bench/%,$(sort $(wildcard bench/*
 # The fuzz harnesses (see "fuzzing" below); defined here, before `check` names them.
 FUZZERS      := $(patsubst tests/fuzz/%.c,%,$(sort $(wildcard tests/fuzz/fuzz_*.c)))
 FUZZ_FLAGS   := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -O1 -g
+# The library itself: optimised, and without comparison tracing. Tracing the comparisons
+# with constants helps the fuzzer through a reader's keywords, not through geometry, and in
+# the library's small fixed-size loops it took over half the time (fuzz_calls ran 2.9 times
+# faster without it and at -O2: 16.5 s against 50 s for its corpus).
+FUZZ_LIB_FLAGS := $(FUZZ_FLAGS:-O1=-O2) -fno-sanitize-coverage=trace-cmp
 FUZZ_OBJS    := $(LIB_SRCS:%.cpp=build/fuzz/%.o)
 FUZZ_SECONDS ?= 60
 REPLAYS      := $(FUZZERS:%=build/san/tests/replay_%)
@@ -261,7 +266,7 @@ check-python: deps-check $(LIB_SO) $(LIB_DEV)
 build/fuzz/%.o: %.cpp | deps
 	@mkdir -p $(@D)
 	$(SAN_CXX) $(filter-out -O2 $(OPENMP),$(CXXFLAGS)) -Wno-unknown-pragmas -Wno-unused-command-line-argument \
-	  $(FUZZ_FLAGS) -MMD -MP -c $< -o $@
+	  $(FUZZ_LIB_FLAGS) -MMD -MP -c $< -o $@
 build/fuzz/%.o: %.c | deps
 	@mkdir -p $(@D)
 	$(SAN_CC) $(filter-out -O2,$(CFLAGS)) $(FUZZ_FLAGS) -DSFA_NO_ALLOC_HOOK -Itests/c -Iapps/surfadapt \
