@@ -201,11 +201,13 @@ enum sfa_param {
         an offset of its smooth vertices along their normals: no volume moves from one
         component to another, and open components are not corrected. 0: no correction, so
         that what the operations alone do to the volumes can be seen. Either way
-        ::SFA_MEASURE_VOLUME_CORRECTION reports how far the operations left a volume. The
-        correction is withheld from a component with no smooth vertex, or whose offset
-        would fold one of its triangles or carry it through another sheet (a thin slab, a
-        coarse cone after strong motion): it keeps its shape, and its volume change is
-        reported by ::SFA_MEASURE_VOLUME_LEFT. A flag, 0 or 1; default 1. */
+        ::SFA_MEASURE_VOLUME_CORRECTION reports how far the operations left a volume. Where
+        the offset would fold a triangle or carry it through another sheet (a thin slab, a
+        coarse cone after strong motion), the corners of those triangles are held and the
+        rest of the component takes the volume back. The correction is withheld from a
+        component with no smooth vertex, or where a few such rounds do not settle it: it
+        keeps its shape, and its volume change is reported by ::SFA_MEASURE_VOLUME_LEFT. A
+        flag, 0 or 1; default 1. */
     SFA_PARAM_VOLUME_CORRECTION = 21,
     /** How fast the desired edge length of a size field (sfa_set_size_field()) may change
         over the surface: before each sfa_adapt() the sizes are lowered where needed so

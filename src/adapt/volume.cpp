@@ -62,12 +62,12 @@ namespace {
 // face. An offset of more than a hundredth of the component's mean thickness (its volume
 // over half its area) is therefore certified, as collision-safe motion is
 // (geometry/collision_time.hpp): every pair of triangles that share no vertex must keep
-// half its gap over the offset, or the components of the pair keep their shapes. Each
-// round leaves at least one more component as it was. The usual offsets (some 1e-5 of
-// the thickness on the paper's flows) stay below that and cost nothing; where the surface
-// nearly touches itself, the crossing guard looks at them (faces_carried_through).
-void keep_clear_of_other_sheets(const TriMesh &mesh, const std::vector<int32_t> &label,
-                                const std::vector<double> &volume, std::vector<Vec3> &moved)
+// half its gap over the offset. Returns the triangles of every pair that does not. The
+// usual offsets (some 1e-5 of the thickness on the paper's flows) stay below that and cost
+// nothing; where the surface nearly touches itself, the crossing guard looks at them
+// (faces_carried_through).
+std::vector<int32_t> triangles_brought_together(const TriMesh &mesh, const std::vector<int32_t> &label,
+                                                const std::vector<double> &volume, const std::vector<Vec3> &moved)
 {
     const int32_t n = mesh.num_vertices(), count = static_cast<int32_t>(volume.size());
     std::vector<double> area(count, 0), largest(count, 0);
@@ -79,23 +79,33 @@ void keep_clear_of_other_sheets(const TriMesh &mesh, const std::vector<int32_t> 
     for (int32_t c = 0; c < count; ++c)
         any = any || largest[c] > 1e-2 * 2 * std::abs(volume[c]) / area[c];
     if (!any)
-        return;
+        return {};
     std::vector<Vec3> offset(n);
     for (int32_t v = 0; v < n; ++v)
         offset[v] = moved[v] - mesh.pos[v];
-    for (int32_t round = 0; round <= count; ++round) {
-        const Approach a = first_approach(mesh, offset, 1);
-        if (a.time >= 1)
-            return;
-        for (const int32_t f : {a.first, a.second}) {
-            const int32_t c = label[mesh.tri[f][0]];
-            for (int32_t v = 0; v < n; ++v)
-                if (label[v] == c) {
-                    moved[v] = mesh.pos[v];
-                    offset[v] = Vec3::Zero();
-                }
-        }
+    // Every pair that would limit the offset, as a contact at any distance.
+    std::vector<Approach> pairs;
+    first_approach_with_contacts(mesh, offset, 1, std::numeric_limits<double>::infinity(), pairs);
+    std::vector<int32_t> triangles;
+    for (const Approach &a : pairs)
+        triangles.insert(triangles.end(), {a.first, a.second});
+    return triangles;
+}
+
+// The triangles with a corner that moves to `moved` and that it turns over.
+std::vector<int32_t> triangles_folded(const TriMesh &mesh, const std::vector<Vec3> &moved)
+{
+    if (first_folded_moved_triangle(mesh, moved) < 0)
+        return {};
+    std::vector<int32_t> folded;
+    for (int32_t t = 0; t < mesh.num_triangles(); ++t) {
+        const Triangle &c = mesh.tri[t];
+        const bool any_moved = moved[c[0]] != mesh.pos[c[0]] || moved[c[1]] != mesh.pos[c[1]] ||
+                               moved[c[2]] != mesh.pos[c[2]];
+        if (any_moved && turned_over(mesh, moved, t))
+            folded.push_back(t);
     }
+    return folded;
 }
 
 // Each closed component's offset along its movable vertices' unit volume gradients, and
@@ -169,8 +179,8 @@ std::vector<int32_t> faces_carried_through(const TriMesh &mesh, CrossingGuard &g
     return faces;
 }
 
-// How many times the corners of faces the guard stops are held before their whole
-// components are left as they were.
+// How many times the corners of the triangles an offset would fold, bring together or
+// carry through each other are held before their whole components are left as they were.
 constexpr int32_t max_holding_rounds = 4;
 
 } // namespace
@@ -193,9 +203,23 @@ VolumeRestoration restore_enclosed_volumes(MeshEdit &edit, const std::vector<int
     VolumeRestoration result;
     std::vector<double> change;
     std::vector<Vec3> moved;
-    // Each round either ends or holds at least one more vertex (the guard's first rounds) or
-    // leaves one more component as it was (the later ones): at most max_holding_rounds +
-    // count + 1 rounds.
+    // An offset that would fold a triangle, bring two sheets together or carry a face the
+    // guard watches through another is not applied: the corners of those triangles are
+    // held and the rest of the component takes the volume back. Folds and approaches come
+    // where few vertices carry a large correction (coarse cones, thin slabs, strong
+    // denoising): a component left as it was there kept a change of up to a third of its
+    // volume. After max_holding_rounds rounds the components still concerned are left as
+    // they were. Each round ends, holds at least one more moving vertex (the first rounds)
+    // or leaves one more component as it was (the later ones): at most
+    // max_holding_rounds + count + 1 rounds.
+    const auto hold_or_leave = [&](int32_t round, const std::vector<int32_t> &triangles) {
+        for (const int32_t t : triangles)
+            if (round < max_holding_rounds)
+                for (const int32_t v : mesh.tri[t])
+                    movable[v] = 0;
+            else
+                leave_as_it_was(label[mesh.tri[t][0]]);
+    };
     for (int32_t round = 0;; ++round) {
         ComponentOffsets offsets = component_offsets(mesh, movable, label, volume, closed);
         if (round == 0)
@@ -209,27 +233,22 @@ VolumeRestoration restore_enclosed_volumes(MeshEdit &edit, const std::vector<int
         for (int32_t v = 0; v < n; ++v)
             moved[v] = offsets.offset[label[v]] != 0 ? Vec3(mesh.pos[v] + offsets.offset[label[v]] * offsets.normal[v])
                                                      : mesh.pos[v];
-        // A component whose offset folds a triangle keeps its shape. Only triangles with a
-        // corner the offsets move count: one that was flat before them is no fold of theirs
-        // (and would otherwise cost every component its correction).
-        if (const int32_t folded = first_folded_moved_triangle(mesh, moved); folded >= 0) {
-            leave_as_it_was(label[mesh.tri[folded][0]]);
+        // Only triangles with a corner the offsets move count as folded: one that was flat
+        // before them is no fold of theirs.
+        if (const std::vector<int32_t> folded = triangles_folded(mesh, moved); !folded.empty()) {
+            hold_or_leave(round, folded);
             continue;
         }
-        keep_clear_of_other_sheets(mesh, label, volume, moved);
+        if (const std::vector<int32_t> near = triangles_brought_together(mesh, label, volume, moved); !near.empty()) {
+            hold_or_leave(round, near);
+            continue;
+        }
         if (!guard)
             break;
         const std::vector<int32_t> through = faces_carried_through(mesh, *guard, moved);
         if (through.empty())
             break;
-        // Hold the corners of those faces and let the rest of their component take its
-        // volume back; if that does not settle, leave the components as they were.
-        for (const int32_t f : through)
-            if (round < max_holding_rounds)
-                for (const int32_t v : mesh.tri[f])
-                    movable[v] = 0;
-            else
-                leave_as_it_was(label[mesh.tri[f][0]]);
+        hold_or_leave(round, through);
     }
     // What the correction left: everything without it, and the components the safeguards
     // above left as they were (or where nothing could move).

@@ -23,11 +23,12 @@ std::vector<double> component_volumes(const TriMesh &mesh, const std::vector<int
 // smallest change of shape that gives it back, and no volume moves from one component to
 // another. Features do not move; open components are not corrected. The volume is an
 // exact cubic in the offset, solved by Newton's method, so the result is exact to
-// round-off; a component whose offset would fold a triangle is left as it is. With a
-// crossing guard, the corners of a face the offset would carry through a watched face are
-// held and the rest of the component takes the volume back (a few rounds; then the
-// component is left as it is): at a fold sharper than the offset is small, the two sides
-// can be nearer than the offset. With `correct` false, nothing moves. The vertices move
+// round-off. Where the offset would fold a triangle, bring two sheets together (an offset
+// above a hundredth of the component's thickness is certified) or, with a crossing guard,
+// carry a face through a watched face (at a fold sharper than the offset is small, the
+// two sides can be nearer than the offset), the corners of those triangles are held and
+// the rest of the component takes the volume back (a few rounds; then the component is
+// left as it is). With `correct` false, nothing moves. The vertices move
 // through `edit` (MeshEdit::offset); a guard is left indexed at the new positions.
 // Returns, as relative volume changes |V - volume[c]| / |volume[c]| of closed components:
 struct VolumeRestoration {

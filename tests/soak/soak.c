@@ -459,9 +459,10 @@ static void op_adapt(run *r)
                  * V0 away from it, and |V0| <= |V| / (1 - l). */
                 const double l = measure(r->s, SFA_MEASURE_VOLUME_LEFT);
                 const double left = l < 1 ? l / (1 - l) * (1 + 1e-6) * magnitude : INFINITY;
-                if (!(excess <= tolerance) && excess <= left + tolerance)
+                if (!(excess <= tolerance) && excess <= left + tolerance) {
                     printf("@count volume_withheld_and_reported 1\n");
-                else if (!(excess <= tolerance))
+                    printf("@max volume_withheld %.3e\n", l);
+                } else if (!(excess <= tolerance))
                     SOAK_FIND("volume", "adapt with topology events changed the total volume from %.17g to %.17g, "
                               "%.3e more than the %.3e its events report",
                               vo, vn, excess, topo_change);
@@ -607,8 +608,9 @@ typedef struct totals {
     char slowest_op[32];
     uint64_t slowest_seed;
     /* observations */
-    double remesh_volume_error, remesh_volume_error_per_tolerance, motion_volume_drift, largest;
-    long motion_crossings_unprotected, remesh_crossings_unguarded, merges, pinches, drops_removed;
+    double remesh_volume_error, remesh_volume_error_per_tolerance, motion_volume_drift, largest, volume_withheld;
+    long motion_crossings_unprotected, remesh_crossings_unguarded, merges, pinches, drops_removed,
+        volume_withheld_and_reported;
     int nfindings;
     uint64_t finding_seed[64];
     int finding_kind[64];
@@ -674,11 +676,14 @@ static void account_line(totals *tot, const char *line, uint64_t seed, int *open
             tot->pinches += (long)value;
         else if (strcmp(key, "drops_removed") == 0)
             tot->drops_removed += (long)value;
+        else if (strcmp(key, "volume_withheld_and_reported") == 0)
+            tot->volume_withheld_and_reported += (long)value;
     } else if (sscanf(line, "@max %63s %lf", key, &value) == 2) {
         double *slot = strcmp(key, "remesh_volume_error") == 0                 ? &tot->remesh_volume_error
                        : strcmp(key, "remesh_volume_error_per_tolerance") == 0 ? &tot->remesh_volume_error_per_tolerance
                        : strcmp(key, "motion_volume_drift") == 0               ? &tot->motion_volume_drift
                        : strcmp(key, "vertices") == 0                          ? &tot->largest
+                       : strcmp(key, "volume_withheld") == 0                   ? &tot->volume_withheld
                                                                                 : NULL;
         if (slot && value > *slot)
             *slot = value;
@@ -812,10 +817,11 @@ static void print_json(const totals *tot, uint64_t seed, double seconds)
            tot->slowest_seed);
     printf("\"largest_mesh\":%.0f,\"remesh_volume_error_max\":%.3e,\"remesh_volume_error_per_tolerance_max\":%.3e,"
            "\"motion_volume_drift_max\":%.3e,\"motion_crossings_unprotected\":%ld,\"remesh_crossings_unguarded\":%ld,"
-           "\"merges\":%ld,\"pinches\":%ld,\"drops_removed\":%ld}\n",
+           "\"merges\":%ld,\"pinches\":%ld,\"drops_removed\":%ld,\"volume_withheld_and_reported\":%ld,"
+           "\"volume_withheld_max\":%.3e}\n",
            tot->largest, tot->remesh_volume_error, tot->remesh_volume_error_per_tolerance, tot->motion_volume_drift,
            tot->motion_crossings_unprotected, tot->remesh_crossings_unguarded, tot->merges, tot->pinches,
-           tot->drops_removed);
+           tot->drops_removed, tot->volume_withheld_and_reported, tot->volume_withheld);
     fflush(stdout);
 }
 

@@ -3,7 +3,9 @@
 // volume back, and with the crossing guard the offset does not carry one side of the
 // surface through the other where the two nearly touch (a soak finding: a coarse box,
 // sheared, whose fold had two faces 1.7e-8 apart at edge length 4.5e-5; an offset of
-// 3e-8 crossed them).
+// 3e-8 crossed them); where an offset would fold triangles or bring two sheets together,
+// their corners are held and the rest of the component takes the volume back (the soak's
+// first finding: whole components were left with their volume changed).
 #include "adapt/volume.hpp"
 #include "geometry/crossing_guard.hpp"
 #include "geometry/self_intersection.hpp"
@@ -101,6 +103,55 @@ void tips_far_apart_are_offset_as_before(void **)
     assert_true(guarded.volume == plain.volume);
 }
 
+// Growth 0.1 moves the surface out by about 5e-3, more than a hundredth of the tube's
+// thickness: the offset is certified, and it would bring the tips, 1e-3 apart, together.
+// The corners of the triangles it brings together are held, and the rest of the tube
+// takes the volume back (the whole component used to be left as it was, its volume 10 %
+// short).
+void a_large_offset_holds_the_tips_it_would_bring_together(void **)
+{
+    for (const bool guarded : {false, true}) {
+        const Correction c = grow(1e-3, 0.1, guarded);
+        assert_int_equal(c.crossings, 0);
+        assert_true(std::abs(c.volume - c.wanted) <= 1e-12 * std::abs(c.wanted));
+        assert_true(c.restoration.largest_left == 0);
+    }
+}
+
+// A sphere with one vertex pushed in to `depth` of the radius: a narrow dimple, concave
+// around its bottom. Given `more` volume, the offset moves every vertex out along
+// its normal; around the bottom the normals converge, and a large enough offset turns the
+// dimple's triangles over.
+Correction grow_dimpled(double depth, double more)
+{
+    sfa_mesh_data m = shape_icosphere(3, 1.0);
+    for (int k = 0; k < 3; ++k)
+        m.xyz[k] *= depth;
+    TriMesh mesh = validated_mesh(MeshInput{m.nverts, m.xyz, m.ntris, m.tris, 0, false});
+    mesh_free(&m);
+    const Components components = connected_components(mesh);
+    std::vector<double> volume = component_volumes(mesh, components.of_vertex, components.count);
+    const double wanted = volume[0] * (1 + more);
+    volume[0] = wanted;
+    const std::vector<int8_t> smooth(mesh.num_vertices(), 0);
+    MeshEdit edit(mesh);
+    const VolumeRestoration restoration =
+        restore_enclosed_volumes(edit, smooth, components.of_vertex, volume, components.closed, true);
+    return {self_intersection_count(mesh), component_volumes(mesh, components.of_vertex, 1)[0], wanted,
+            restoration};
+}
+
+// A dimple half the radius deep, given 30 % more volume: the corners of the triangles the
+// offset would turn over are held, and the rest of the sphere takes the volume back (the
+// whole sphere used to be left as it was, 23 % short).
+void an_offset_that_would_fold_the_dimple_holds_its_bottom(void **)
+{
+    const Correction c = grow_dimpled(0.5, 0.3);
+    assert_int_equal(c.crossings, 0);
+    assert_true(std::abs(c.volume - c.wanted) <= 1e-12 * std::abs(c.wanted));
+    assert_true(c.restoration.largest_left == 0);
+}
+
 } // namespace
 
 int main(void)
@@ -109,6 +160,8 @@ int main(void)
         cmocka_unit_test(without_the_guard_the_offset_carries_the_tips_through_each_other),
         cmocka_unit_test(with_the_guard_the_tips_stay_apart_and_the_volume_comes_back),
         cmocka_unit_test(tips_far_apart_are_offset_as_before),
+        cmocka_unit_test(a_large_offset_holds_the_tips_it_would_bring_together),
+        cmocka_unit_test(an_offset_that_would_fold_the_dimple_holds_its_bottom),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
