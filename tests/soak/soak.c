@@ -611,6 +611,7 @@ typedef struct totals {
     double remesh_volume_error, remesh_volume_error_per_tolerance, motion_volume_drift, largest, volume_withheld;
     long motion_crossings_unprotected, remesh_crossings_unguarded, merges, pinches, drops_removed,
         volume_withheld_and_reported;
+    uint64_t withheld_seed[16];
     int nfindings;
     uint64_t finding_seed[64];
     int finding_kind[64];
@@ -676,8 +677,12 @@ static void account_line(totals *tot, const char *line, uint64_t seed, int *open
             tot->pinches += (long)value;
         else if (strcmp(key, "drops_removed") == 0)
             tot->drops_removed += (long)value;
-        else if (strcmp(key, "volume_withheld_and_reported") == 0)
+        else if (strcmp(key, "volume_withheld_and_reported") == 0) {
+            /* The seeds of the first few, to look at what the correction still leaves. */
+            if (tot->volume_withheld_and_reported < 16)
+                tot->withheld_seed[tot->volume_withheld_and_reported] = seed;
             tot->volume_withheld_and_reported += (long)value;
+        }
     } else if (sscanf(line, "@max %63s %lf", key, &value) == 2) {
         double *slot = strcmp(key, "remesh_volume_error") == 0                 ? &tot->remesh_volume_error
                        : strcmp(key, "remesh_volume_error_per_tolerance") == 0 ? &tot->remesh_volume_error_per_tolerance
@@ -818,10 +823,13 @@ static void print_json(const totals *tot, uint64_t seed, double seconds)
     printf("\"largest_mesh\":%.0f,\"remesh_volume_error_max\":%.3e,\"remesh_volume_error_per_tolerance_max\":%.3e,"
            "\"motion_volume_drift_max\":%.3e,\"motion_crossings_unprotected\":%ld,\"remesh_crossings_unguarded\":%ld,"
            "\"merges\":%ld,\"pinches\":%ld,\"drops_removed\":%ld,\"volume_withheld_and_reported\":%ld,"
-           "\"volume_withheld_max\":%.3e}\n",
+           "\"volume_withheld_max\":%.3e,\"volume_withheld_seeds\":[",
            tot->largest, tot->remesh_volume_error, tot->remesh_volume_error_per_tolerance, tot->motion_volume_drift,
            tot->motion_crossings_unprotected, tot->remesh_crossings_unguarded, tot->merges, tot->pinches,
            tot->drops_removed, tot->volume_withheld_and_reported, tot->volume_withheld);
+    for (long k = 0; k < tot->volume_withheld_and_reported && k < 16; ++k)
+        printf("%s%" PRIu64, k ? "," : "", tot->withheld_seed[k]);
+    printf("]}\n");
     fflush(stdout);
 }
 
