@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "adapt/smooth.hpp"
 
-#include "geometry/angles.hpp"
 #include "geometry/circle.hpp"
 #include "geometry/crossing_guard.hpp"
 #include "geometry/local_fit.hpp"
@@ -135,38 +134,6 @@ int32_t first_folded_or_turned(const TriMesh &mesh, const SurfaceAnalysis &analy
     return first < mesh.num_triangles() ? first : -1;
 }
 
-// A triangle with an angle below this is a needle. A ridge vertex that slides along its
-// ridge towards a corner it is joined to by another edge squeezes the triangle between
-// them a little in every sweep (vortex T = 6: one went from 4.25 to 4.23 degrees in six
-// sweeps), and contraction cannot take such an edge away: it would join two features.
-constexpr double needle_degrees = 5;
-
-// The smallest angle, in degrees, of the triangles around v with v at `at` (its
-// neighbours where they are).
-double smallest_angle_around(const TriMesh &mesh, int32_t v, const Vec3 &at)
-{
-    double smallest = 180;
-    mesh.for_each_outgoing(v, [&](int32_t h) {
-        const Triangle &t = mesh.tri[TriMesh::face(h)];
-        Vec3 p[3];
-        for (int k = 0; k < 3; ++k)
-            p[k] = t[k] == v ? at : mesh.pos[t[k]];
-        for (int k = 0; k < 3; ++k) {
-            const Vec3 e1 = p[(k + 1) % 3] - p[k], e2 = p[(k + 2) % 3] - p[k];
-            smallest = std::min(smallest, std::atan2(e1.cross(e2).norm(), e1.dot(e2)) * degrees_per_radian);
-        }
-    });
-    return smallest;
-}
-
-// True if moving feature vertex v by `motion` would make a needle of its fan, or a needle
-// there thinner still.
-bool sharpens_a_needle(const TriMesh &mesh, int32_t v, const Vec3 &motion)
-{
-    const double after = smallest_angle_around(mesh, v, mesh.pos[v] + motion);
-    return after < needle_degrees && after < smallest_angle_around(mesh, v, mesh.pos[v]);
-}
-
 } // namespace
 
 std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &analysis, double denoise,
@@ -187,8 +154,6 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
                 motion[v] += denoising_motion(mesh, umbrella, analysis.metric[v].normal, v, denoise);
         } else {
             motion[v] = ridge_motion(mesh, analysis, v);
-            if (sharpens_a_needle(mesh, v, motion[v]))
-                motion[v] = Vec3::Zero();
         }
     }
 

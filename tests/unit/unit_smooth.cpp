@@ -6,7 +6,6 @@
 #include "adapt/settings.hpp"
 #include "adapt/smooth.hpp"
 #include "geometry/crossing_guard.hpp"
-#include "geometry/measures.hpp"
 #include "geometry/self_intersection.hpp"
 #include "mesh/validate.hpp"
 #include "motion/fold_time.hpp"
@@ -109,29 +108,6 @@ void a_face_stopped_where_it_was_is_asked_again(void **)
     assert_int_equal(self_intersection_count(mesh), 0);
 }
 
-// A ridge vertex 0.15 edge lengths from a corner, joined to it by an edge that is not a
-// ridge, makes a needle with them (4.25 degrees); contraction cannot take that edge away
-// (it would join two features), and every sweep slid the ridge vertex a little further
-// along its ridge, thinning the needle (to 4.23 degrees in six sweeps). Cut from the
-// vortex flow of T = 6 at t = 3. A feature vertex's move may not thin a needle.
-void a_sweep_does_not_thin_a_needle(void **)
-{
-    sfa_mesh_data m;
-    char err[256];
-    assert_int_equal(mesh_file_read("tests/unit/data/needle-at-a-corner.obj", &m, nullptr, err, sizeof err), 0);
-    TriMesh mesh = validated_mesh(MeshInput{m.nverts, m.xyz, m.ntris, m.tris, 0, false});
-    mesh_free(&m);
-    const double needle = angle_range(mesh).min_degrees;
-    assert_true(needle < 5);
-    const std::vector<Vec3> before = mesh.pos;
-    for (int sweep = 0; sweep < 6; ++sweep) {
-        const SurfaceAnalysis analysis = analyze_surface(mesh, default_thresholds, default_bounds);
-        mesh.pos = smoothing_sweep(mesh, analysis, 0, nullptr);
-    }
-    assert_true(mesh.pos != before); // the sweeps still smooth
-    assert_true(angle_range(mesh).min_degrees >= needle);
-}
-
 } // namespace
 
 int main()
@@ -140,7 +116,6 @@ int main()
         cmocka_unit_test(a_triangle_flat_before_the_sweep_does_not_stop_it),
         cmocka_unit_test(only_moved_triangles_count_as_folds),
         cmocka_unit_test(a_face_stopped_where_it_was_is_asked_again),
-        cmocka_unit_test(a_sweep_does_not_thin_a_needle),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
