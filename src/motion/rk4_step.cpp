@@ -18,6 +18,8 @@ std::vector<Vec3> evaluate(const VelocityField &field, const std::vector<Vec3> &
 {
     const int32_t n = static_cast<int32_t>(points.size());
     std::vector<Vec3> velocity(n, Vec3::Zero());
+    if (n == 0)
+        return velocity; // a surface all of whose drops an adaptation removed: nothing to ask
     field(n, points.data()->data(), t, velocity.data()->data());
     const int32_t first_bad = first_where(n, [&](int32_t v) { return !velocity[v].allFinite(); });
     if (first_bad < n) {
