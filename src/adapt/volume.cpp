@@ -92,19 +92,17 @@ std::vector<int32_t> triangles_brought_together(const TriMesh &mesh, const std::
     return triangles;
 }
 
-// The triangles with a corner that moves to `moved` and that it turns over.
+// Every triangle the offsets fold (move_folded): the first found in parallel, the rest
+// listed from there only where there is one.
 std::vector<int32_t> triangles_folded(const TriMesh &mesh, const std::vector<Vec3> &moved)
 {
-    if (first_folded_moved_triangle(mesh, moved) < 0)
+    const int32_t first = first_folded_moved_triangle(mesh, moved);
+    if (first < 0)
         return {};
     std::vector<int32_t> folded;
-    for (int32_t t = 0; t < mesh.num_triangles(); ++t) {
-        const Triangle &c = mesh.tri[t];
-        const bool any_moved = moved[c[0]] != mesh.pos[c[0]] || moved[c[1]] != mesh.pos[c[1]] ||
-                               moved[c[2]] != mesh.pos[c[2]];
-        if (any_moved && turned_over(mesh, moved, t))
+    for (int32_t t = first; t < mesh.num_triangles(); ++t)
+        if (move_folded(mesh, moved, t))
             folded.push_back(t);
-    }
     return folded;
 }
 

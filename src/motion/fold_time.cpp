@@ -41,14 +41,17 @@ int32_t first_folded_triangle(const TriMesh &mesh, const std::vector<Vec3> &move
     return first < mesh.num_triangles() ? first : -1;
 }
 
+bool move_folded(const TriMesh &mesh, const std::vector<Vec3> &moved, int32_t t)
+{
+    const Triangle &c = mesh.tri[t];
+    const bool any_moved =
+        moved[c[0]] != mesh.pos[c[0]] || moved[c[1]] != mesh.pos[c[1]] || moved[c[2]] != mesh.pos[c[2]];
+    return any_moved && turned_over(mesh, moved, t);
+}
+
 int32_t first_folded_moved_triangle(const TriMesh &mesh, const std::vector<Vec3> &moved)
 {
-    const int32_t first = first_where(mesh.num_triangles(), [&](int32_t t) {
-        const Triangle &c = mesh.tri[t];
-        const bool any_moved = moved[c[0]] != mesh.pos[c[0]] || moved[c[1]] != mesh.pos[c[1]] ||
-                               moved[c[2]] != mesh.pos[c[2]];
-        return any_moved && turned_over(mesh, moved, t);
-    });
+    const int32_t first = first_where(mesh.num_triangles(), [&](int32_t t) { return move_folded(mesh, moved, t); });
     return first < mesh.num_triangles() ? first : -1;
 }
 

@@ -35,10 +35,14 @@ bool turned_over(const TriMesh &mesh, const std::vector<Vec3> &moved, int32_t t)
 // The first triangle (0-based) that `moved` leaves turned over, or -1 if none.
 int32_t first_folded_triangle(const TriMesh &mesh, const std::vector<Vec3> &moved);
 
-// The same among the triangles with a corner that `moved` puts somewhere else: what a move
-// folded, and not a triangle that was flat before it and did not move (no move of other
-// vertices unfolds that one, so a caller that stops the corners of what this reports would
-// otherwise stop them forever). Stopping the corners of the triangle reported (moved[v] =
+// Whether triangle t has a corner that `moved` puts somewhere else and is turned over
+// there: what a move folded (first_folded_moved_triangle).
+bool move_folded(const TriMesh &mesh, const std::vector<Vec3> &moved, int32_t t);
+
+// The first triangle (0-based, or -1) for which move_folded: what a move folded, and not
+// a triangle that was flat before it and did not move (no move of other vertices unfolds
+// that one, so a caller that stops the corners of what this reports would otherwise stop
+// them forever). Stopping the corners of the triangle reported (moved[v] =
 // mesh.pos[v]) leaves one vertex fewer that moves, so a loop doing that ends within the
 // number of vertices.
 int32_t first_folded_moved_triangle(const TriMesh &mesh, const std::vector<Vec3> &moved);

@@ -57,7 +57,7 @@ static void flow(void *ctx, int32_t n, const double *xyz, double t, double *vel)
 /* sfa_adapt, checked, with at most three passes: each pass may more than double the
  * vertices where the metric asks for far shorter edges than the mesh has, so that eight
  * took a 34-vertex disc flattened to 1e10 times its thickness to 26,000 vertices in one
- * call, for several seconds (tests/fuzz/open). What passes four to eight do is what the
+ * call, for several seconds (tests/fuzz/open/README.md). What passes four to eight do is what the
  * first three do again. */
 static void adapt_bounded(sfa_surface *s)
 {

@@ -49,7 +49,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     if (size == 0)
         return 0;
-    const int reader = forced_reader() >= 0 ? forced_reader() : data[0] % 7;
+    const int forced = forced_reader(), reader = forced >= 0 ? forced : data[0] % 7;
     const char *name = names[reader];
     ++inputs_of[reader];
     char *bytes = malloc(size);
