@@ -75,7 +75,7 @@ UNIT_TESTS       := $(patsubst tests/unit/%.cpp,build/tests/%,$(sort $(wildcard 
 SAN_TESTS        := $(patsubst build/tests/%,build/san/tests/%,$(C_TESTS))
 # Unit tests of numeric edge cases (cells of non-finite points, fold times at extreme
 # scales), also run under the sanitizers: undefined behaviour is what they are about.
-SAN_UNIT_TESTS   := build/san/tests/unit_spatial_grid build/san/tests/unit_motion
+SAN_UNIT_TESTS   := build/san/tests/unit_spatial_grid build/san/tests/unit_motion build/san/tests/unit_swept_pairs
 ALLOC_HOOK_OBJ   := build/tests/c/alloc_hook/alloc_hook.o
 FORTRAN_TEST     := build/tests/test_fortran
 FORTRAN_EXAMPLE  := build/examples/vortex_host

@@ -23,11 +23,14 @@ inline bool boxes_overlap(const Box &a, const Box &b)
     return (a[0] - b[1]).maxCoeff() <= 0 && (b[0] - a[1]).maxCoeff() <= 0;
 }
 
-// Calls visit(s, t), s < t, once for every two overlapping boxes, from parallel loops
-// (visit may use thread_index() for its own scratch). `cell` is the grid's cell size,
-// about the size of a typical box. Boxes with a NaN corner overlap nothing.
+// Calls visit(s, t), s < t, once for every two overlapping boxes, from parallel loops of
+// `threads` threads (visit may use thread_index() for its own scratch; called from a
+// parallel loop of its own, pass 1: a nested loop would number its threads from 0 again).
+// `cell` is the grid's cell size, about the size of a typical box. Boxes with a NaN corner
+// overlap nothing.
 template <class Visit>
-void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit &&visit)
+void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit &&visit,
+                               int threads = loop_threads())
 {
     const int32_t n = static_cast<int32_t>(boxes.size());
     std::vector<int32_t> small, large;
@@ -54,7 +57,7 @@ void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit
                    [&](int32_t m) { return boxes[small[m]]; },
                    [&](int32_t m, const GridCell &first) { return Entry{boxes[small[m]], first, small[m]}; });
         const int64_t buckets = static_cast<int64_t>(grid.bucket_count());
-#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 64)
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
         for (int64_t b = 0; b < buckets; ++b)
             grid.for_each_pair_in_bucket(static_cast<size_t>(b), [&](const Entry &m, const Entry &k, uint64_t here) {
                 // Each pair once: in the first cell both boxes cover.
@@ -63,7 +66,7 @@ void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit
             });
     }
     const int64_t count = static_cast<int64_t>(large.size());
-#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 1)
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
     for (int64_t i = 0; i < count; ++i) {
         const int32_t s = large[static_cast<size_t>(i)];
         for (int32_t t = 0; t < n; ++t)

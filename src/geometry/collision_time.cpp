@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "geometry/collision_time.hpp"
 
-#include "geometry/box_pairs.hpp"
+#include "geometry/swept_pairs.hpp"
 #include "geometry/distance.hpp"
 #include "mesh/parallel.hpp"
 
@@ -233,33 +233,27 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
     const int32_t n = mesh.num_triangles();
     if (n < 2)
         return first;
-    // The box each triangle sweeps over the step, and cells of about the size of the
-    // boxes, so that each box covers a few cells and a cell holds few boxes.
-    std::vector<Box> swept(static_cast<size_t>(n));
+    // Each triangle's box at the start and the box of its corners' displacements.
+    std::vector<SweptTriangle> swept(static_cast<size_t>(n));
     std::vector<Reach> reach(static_cast<size_t>(n));
-    double extent = 0;
-#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(+ : extent)
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t t = 0; t < n; ++t) {
         const Triangle &c = mesh.tri[t];
-        Vec3 lo = mesh.pos[c[0]], hi = lo;
-        for (int32_t v : c)
-            for (const Vec3 &x : {mesh.pos[v], Vec3(mesh.pos[v] + dt * velocity[v])}) {
-                lo = lo.cwiseMin(x);
-                hi = hi.cwiseMax(x);
-            }
-        swept[t] = {lo, hi};
-        extent += (hi - lo).maxCoeff();
+        SweptTriangle &s = swept[t];
+        s.start = {mesh.pos[c[0]], mesh.pos[c[0]]};
+        s.motion = {dt * velocity[c[0]], dt * velocity[c[0]]};
+        for (int32_t v : {c[1], c[2]}) {
+            s.start = {s.start[0].cwiseMin(mesh.pos[v]), s.start[1].cwiseMax(mesh.pos[v])};
+            s.motion = {s.motion[0].cwiseMin(dt * velocity[v]), s.motion[1].cwiseMax(dt * velocity[v])};
+        }
         reach[t] = reach_of(mesh.pos[c[0]], mesh.pos[c[1]], mesh.pos[c[2]], velocity[c[0]], velocity[c[1]],
                             velocity[c[2]]);
     }
-    const double cell = extent / n;
-    if (!(cell > 0))
-        return first;
 
     std::vector<Approach> per_thread(static_cast<size_t>(loop_threads()), first);
     std::vector<std::vector<Approach>> touching(per_thread.size());
-    const auto look_at = [&](int32_t s, int32_t t) {
-        Approach &mine = per_thread[static_cast<size_t>(thread_index())];
+    const auto look_at = [&](int32_t s, int32_t t, int thread) {
+        Approach &mine = per_thread[static_cast<size_t>(thread)];
         const Triangle &p = mesh.tri[s], &q = mesh.tri[t];
         if (share_a_vertex(p, q))
             return; // neighbours: the fold control's concern
@@ -291,14 +285,23 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
         pair.second = t;
         pair.size = size;
         if (near && pair.time < dt)
-            touching[static_cast<size_t>(thread_index())].push_back(pair);
+            touching[static_cast<size_t>(thread)].push_back(pair);
         else if (earlier(pair, mine))
             mine = pair;
     };
-    if (among)
-        for_each_overlapping_pair_with(swept, *among, cell, look_at);
-    else
-        for_each_overlapping_pair(swept, cell, look_at);
+    if (among) { // few: the boxes at rest, in a grid of their own (box_pairs.hpp)
+        std::vector<Box> boxes(swept.size());
+        double extent = 0;
+        for (size_t t = 0; t < boxes.size(); ++t) {
+            boxes[t] = swept_in_frame(swept[t], Vec3::Zero());
+            extent += (boxes[t][1] - boxes[t][0]).maxCoeff();
+        }
+        if (const double cell = extent / n; cell > 0)
+            for_each_overlapping_pair_with(boxes, *among, cell,
+                                           [&](int32_t s, int32_t t) { look_at(s, t, thread_index()); });
+    } else {
+        for_each_pair_that_may_meet(swept, look_at);
+    }
     for (const Approach &a : per_thread)
         if (earlier(a, first))
             first = a;

@@ -39,7 +39,7 @@ struct Approach {
 // continuous collision detection, collision_time.cpp). A pair that touches at the start
 // (within round-off) may slide along its plane of contact or open, not close; pairs that
 // already meet have no such plane and are not limited. The pairs are found by
-// their swept boxes over [0, dt] (box_pairs.hpp); the result does not depend on the
+// their swept boxes over [0, dt] (swept_pairs.hpp); the result does not depend on the
 // number of threads.
 Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt);
 
