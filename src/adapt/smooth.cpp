@@ -175,8 +175,11 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
     // rounds over 52,000 watched faces per sweep: 56 s in the sanitizer build.) A face whose
     // corners have all been stopped is asked too: back where it was, it may meet a face
     // that moved and was asked only against where it would have gone (vortex T = 6 with
-    // topology change, t = 5.895: four crossing pairs); then the other face's corners stop.
-    std::vector<int32_t> stopped_since, asked_in_round;
+    // topology change, t = 5.895: four crossing pairs); then the other face's corners stop,
+    // and it is asked again in the next round, for the guard names one face it meets at a
+    // time (a fuzz input: a large face, back where it was, met six faces that moved; the
+    // corners of the first stopped, and the other five were left through it).
+    std::vector<int32_t> stopped_since, asked_in_round, ask_again;
     const auto stop = [&](int32_t v) {
         if (motion[v] != Vec3::Zero()) {
             motion[v] = Vec3::Zero();
@@ -204,17 +207,20 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
             asked_in_round.assign(mesh.num_triangles(), -1);
         } else {
             asked.clear();
+            const auto ask = [&](int32_t f) {
+                if (asked_in_round[f] == round || !guard->watches_any(mesh.tri[f]))
+                    return;
+                asked_in_round[f] = round;
+                guard->refresh(mesh, moved, f);
+                asked.push_back(f);
+            };
             for (const int32_t v : stopped_since)
-                mesh.for_each_outgoing(v, [&](int32_t h) {
-                    const int32_t f = TriMesh::face(h);
-                    if (asked_in_round[f] == round || !guard->watches_any(mesh.tri[f]))
-                        return;
-                    asked_in_round[f] = round;
-                    guard->refresh(mesh, moved, f);
-                    asked.push_back(f);
-                });
+                mesh.for_each_outgoing(v, [&](int32_t h) { ask(TriMesh::face(h)); });
+            for (const int32_t f : ask_again)
+                ask(f);
         }
         stopped_since.clear();
+        ask_again.clear();
         std::vector<int32_t> crossed(asked.size(), -1);
 #pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 256)
         for (size_t i = 0; i < asked.size(); ++i) {
@@ -223,10 +229,15 @@ std::vector<Vec3> smoothing_sweep(const TriMesh &mesh, const SurfaceAnalysis &an
             if (!first_round || moves(t))
                 crossed[i] = guard->face_crossed(mesh, moved, t, at);
         }
-        for (size_t i = 0; i < asked.size(); ++i)
-            if (crossed[i] >= 0)
-                for (int32_t v : mesh.tri[moves(mesh.tri[asked[i]]) ? asked[i] : crossed[i]])
-                    stop(v);
+        for (size_t i = 0; i < asked.size(); ++i) {
+            if (crossed[i] < 0)
+                continue;
+            const bool asker_moves = moves(mesh.tri[asked[i]]);
+            for (int32_t v : mesh.tri[asker_moves ? asked[i] : crossed[i]])
+                stop(v);
+            if (!asker_moves)
+                ask_again.push_back(asked[i]);
+        }
         if (stopped_since.empty())
             return moved;
     }
