@@ -144,6 +144,7 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
     // round, so that two edges closer than d have overlapping boxes.
     std::vector<int32_t> edges;
     std::vector<Box> boxes;
+    std::vector<Vec3> normals; // each edge's, once: most pairs are two edges of one sheet, not facing
     double cell = 0;
     for (int32_t h = 0; h < static_cast<int32_t>(mesh_.opp.size()); ++h) {
         if (mesh_.opp[h] < 0 || mesh_.opp[h] > h)
@@ -151,6 +152,7 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
         const int32_t a = mesh_.tail(h), b = mesh_.head(h);
         const Vec3 grow = Vec3::Constant(0.5 * merge_distance(a, b));
         edges.push_back(h);
+        normals.push_back(edge_normal(h));
         boxes.push_back({pos_[a].cwiseMin(pos_[b]) - grow, pos_[a].cwiseMax(pos_[b]) + grow});
         cell += (pos_[b] - pos_[a]).norm() + 2 * grow[0];
     }
@@ -159,6 +161,9 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
     cell /= static_cast<double>(edges.size());
     std::vector<std::vector<MergeCandidate>> found(static_cast<size_t>(loop_threads()));
     for_each_overlapping_pair(boxes, cell, [&](int32_t s, int32_t t) {
+        const Vec3 &n1 = normals[s], &n2 = normals[t];
+        if (!(n1.dot(n2) < facing_cosine))
+            return;
         const int32_t h1 = edges[s], h2 = edges[t];
         const int32_t a1 = mesh_.tail(h1), b1 = mesh_.head(h1), a2 = mesh_.tail(h2), b2 = mesh_.head(h2);
         if (a1 == a2 || a1 == b2 || b1 == a2 || b1 == b2)
@@ -167,9 +172,6 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
         const double distance = (c2 - c1).norm();
         const double d = std::min(merge_distance(a1, b1), merge_distance(a2, b2));
         if (!(distance < d))
-            return;
-        const Vec3 n1 = edge_normal(h1), n2 = edge_normal(h2);
-        if (!(n1.dot(n2) < facing_cosine))
             return;
         // Each on the side of the other its normal points to: the outer phase between
         // them, two drops meet. Each on the side its normal points away from: a film of
