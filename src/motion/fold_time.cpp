@@ -73,7 +73,13 @@ double triangle_fold_time(const Vec3 &e1, const Vec3 &e2, const Vec3 &d1, const 
     int k = 0, j = 0;
     std::frexp(edge, &k);
     std::frexp(speed, &j);
+    // A product with 2^-k is ldexp(x, -k), rounded the same where it underflows, and one
+    // ldexp per vector instead of one per coordinate (this runs for every triangle at every
+    // stage of every step). 2^by is a double for by <= 1023; above that (coordinates under
+    // 1e-308) each coordinate is scaled on its own.
     const auto scaled = [](const Vec3 &v, int by) {
+        if (by <= 1023)
+            return Vec3(v * std::ldexp(1.0, by));
         return Vec3(std::ldexp(v.x(), by), std::ldexp(v.y(), by), std::ldexp(v.z(), by));
     };
     const Vec3 f1 = scaled(e1, -k), f2 = scaled(e2, -k), g1 = scaled(d1, -j), g2 = scaled(d2, -j);
