@@ -87,7 +87,9 @@ SFA_EXPORT int sfa_measure(const sfa_surface *s, int quantity, double *value)
         if (call_measure(s, quantity, *value))
             return;
         require_mesh(s);
-        *value = mesh_measure(s->mesh, quantity);
+        // The volume is summed per component: the handle knows its components.
+        *value = quantity == SFA_MEASURE_VOLUME ? enclosed_volume(s->mesh, s->components)
+                                                : mesh_measure(s->mesh, quantity);
     });
 }
 

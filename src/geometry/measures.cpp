@@ -17,11 +17,11 @@ namespace {
 double angle_between(const Vec3 &u, const Vec3 &w) { return std::atan2(u.cross(w).norm(), u.dot(w)); }
 } // namespace
 
-double enclosed_volume(const TriMesh &mesh) { return enclosed_volume(mesh, mesh.pos); }
+double enclosed_volume(const TriMesh &mesh) { return enclosed_volume(mesh, connected_components(mesh)); }
 
-double enclosed_volume(const TriMesh &mesh, const std::vector<Vec3> &positions)
+double enclosed_volume(const TriMesh &mesh, const Components &components)
 {
-    const Components components = connected_components(mesh);
+    const std::vector<Vec3> &positions = mesh.pos;
     std::vector<Vec3> about = component_centres(positions, components.of_vertex, components.count);
     for (int32_t c = 0; c < components.count; ++c)
         if (!components.closed[c])

@@ -3,6 +3,7 @@
 // area, angles, edge lengths, triangle aspect ratio.
 #pragma once
 
+#include "mesh/components.hpp"
 #include "mesh/tri_mesh.hpp"
 
 namespace sfa {
@@ -13,8 +14,9 @@ namespace sfa {
 // about the origin, the terms of a unit sphere at (1e5, 1e5, 1e5) are 1e15 each and cancel
 // to a volume of 4, with 15 of the 16 digits lost; about its centre they lose none.
 double enclosed_volume(const TriMesh &mesh);
-// The same with the mesh's vertices at `positions` instead.
-double enclosed_volume(const TriMesh &mesh, const std::vector<Vec3> &positions);
+// The same with the mesh's components known (a handle keeps them: finding them again cost
+// as much as the sum itself).
+double enclosed_volume(const TriMesh &mesh, const Components &components);
 
 // The centre of each component's bounding box (label[v] in [0, count) the component of
 // vertex v; a component without vertices gets the origin): the point about which its
