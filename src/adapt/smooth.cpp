@@ -120,15 +120,25 @@ int32_t first_folded_or_turned(const TriMesh &mesh, const SurfaceAnalysis &analy
 {
     const int32_t first = first_where(mesh.num_triangles(), [&](int32_t f) {
         const Triangle &t = mesh.tri[f];
-        const Vec3 before = (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]);
-        const Vec3 after = (moved[t[1]] - moved[t[0]]).cross(moved[t[2]] - moved[t[0]]);
         if (moved[t[0]] == mesh.pos[t[0]] && moved[t[1]] == mesh.pos[t[1]] && moved[t[2]] == mesh.pos[t[2]])
             return false; // as it was: whatever it is, not this move's doing
+        const Vec3 before = (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]);
+        const Vec3 after = (moved[t[1]] - moved[t[0]]).cross(moved[t[2]] - moved[t[0]]);
         if (!(before.dot(after) > 0))
             return true;
-        for (int32_t c : t)
-            if (turns_at_corner(mesh, analysis.fan_area, analysis.features.rank[c], c, before, after))
+        // The face's lengths once for its three corners (this check runs on every face).
+        double before_length = -1, after_length = -1;
+        for (int32_t c : t) {
+            if (analysis.features.rank[c] != 0)
+                continue;
+            if (before_length < 0) {
+                before_length = before.norm();
+                after_length = after.norm();
+            }
+            if (turns_from_surface(before, after, surface_side(mesh, analysis.fan_area, c), before_length,
+                                   after_length))
                 return true;
+        }
         return false;
     });
     return first < mesh.num_triangles() ? first : -1;

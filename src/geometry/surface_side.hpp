@@ -55,14 +55,22 @@ constexpr double cos_steepest_face = 0.5;
 // the side `side` (a vertex's fan_area): the face faced that side and now stands steeper
 // than cos_steepest_face (or turns away, or is flat); a face already that steep may not
 // stand any steeper. A face that faced away (or stood on its side) is left alone.
-inline bool turns_from_surface(const Vec3 &before, const Vec3 &after, const Vec3 &side)
+// `before_length` and `after_length` are the norms of the two (a face's corners share them).
+inline bool turns_from_surface(const Vec3 &before, const Vec3 &after, const Vec3 &side, double before_length,
+                               double after_length)
 {
     const double along = before.dot(side);
     if (!(along > 0))
         return false;
-    const double cos_before = along / (before.norm() * side.norm());
-    const double cos_after = after.dot(side) / (after.norm() * side.norm());
+    const double side_length = side.norm();
+    const double cos_before = along / (before_length * side_length);
+    const double cos_after = after.dot(side) / (after_length * side_length);
     return !(cos_after > 0 && cos_after >= std::min(cos_before, cos_steepest_face));
+}
+
+inline bool turns_from_surface(const Vec3 &before, const Vec3 &after, const Vec3 &side)
+{
+    return turns_from_surface(before, after, side, before.norm(), after.norm());
 }
 
 // The side the surface faces at v (fan_area: the analysis's, as the pass found it); for a
