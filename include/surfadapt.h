@@ -603,7 +603,10 @@ int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t, double dt
  * vertex moves in its tangent plane towards the point that balances its edges' lengths in
  * the anisotropic metric and is lifted onto a quadratic surface fitted to its neighbours;
  * every ridge or boundary vertex moves along the circle through itself and its two ridge
- * neighbours (the line, where they are collinear); corners do not move. A vertex whose
+ * neighbours (the line, where they are collinear); corners do not move. A smooth vertex
+ * whose balancing step would be shorter than 2.5 % of its mean (metric) edge stays where it
+ * is: its fan is settled, and a mesh that is settled everywhere is left exactly as it is
+ * (the sweeps do not drift it off the surface). A vertex whose
  * move would fold a triangle stays put for that sweep, and so do the corners of a triangle
  * that would pass through another part of the surface (::SFA_PARAM_CROSSING_GUARD, on by
  * default: where a sheet is thinner than an edge, its other side is that near; such places

@@ -108,6 +108,48 @@ void a_face_stopped_where_it_was_is_asked_again(void **)
     assert_int_equal(self_intersection_count(mesh), 0);
 }
 
+// Sweeps leave a fan near its equilibrium where it is (smooth.cpp, settled_imbalance):
+// a jittered sphere settles, after which a sweep moves nothing; a vertex pushed a fifth of
+// an edge along the surface moves back, and only the fans that contain it are looked at
+// again. (Without the rule the Jacobi iteration only converges: every sweep moves every
+// vertex a little, and lifts it onto a fitted quadric.)
+void a_settled_fan_stays_where_it_is(void **)
+{
+    TriMesh mesh = jittered_sphere();
+    int32_t sweeps = 0;
+    for (;; ++sweeps) {
+        assert_true(sweeps < 50);
+        const std::vector<Vec3> moved =
+            smoothing_sweep(mesh, analyze_surface(mesh, default_thresholds, default_bounds));
+        if (moved == mesh.pos)
+            break;
+        mesh.pos = moved;
+    }
+    print_message("settled after %d sweeps\n", sweeps);
+
+    const int32_t pushed = 0;
+    Vec3 along = Vec3::Zero();
+    double edge = 0;
+    int32_t valence = 0;
+    mesh.for_each_neighbour(pushed, [&](int32_t w, int32_t) {
+        if (valence == 0)
+            along = mesh.pos[w] - mesh.pos[pushed];
+        edge += (mesh.pos[w] - mesh.pos[pushed]).norm();
+        ++valence;
+    });
+    const Vec3 settled = mesh.pos[pushed];
+    mesh.pos[pushed] = (settled + 0.2 * edge / valence * along.normalized()).normalized(); // still on the sphere
+    const double pushed_by = (mesh.pos[pushed] - settled).norm();
+    const std::vector<Vec3> moved = smoothing_sweep(mesh, analyze_surface(mesh, default_thresholds, default_bounds));
+    assert_true((moved[pushed] - settled).norm() < 0.5 * pushed_by);
+    std::vector<char> in_a_fan_with_it(mesh.num_vertices(), 0);
+    in_a_fan_with_it[pushed] = 1;
+    mesh.for_each_neighbour(pushed, [&](int32_t w, int32_t) { in_a_fan_with_it[w] = 1; });
+    for (int32_t v = 0; v < mesh.num_vertices(); ++v)
+        if (!in_a_fan_with_it[v])
+            assert_true(moved[v] == mesh.pos[v]);
+}
+
 } // namespace
 
 int main()
@@ -116,6 +158,7 @@ int main()
         cmocka_unit_test(a_triangle_flat_before_the_sweep_does_not_stop_it),
         cmocka_unit_test(only_moved_triangles_count_as_folds),
         cmocka_unit_test(a_face_stopped_where_it_was_is_asked_again),
+        cmocka_unit_test(a_settled_fan_stays_where_it_is),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
