@@ -7,6 +7,8 @@
 #                   command line, sanitizers); what CI runs
 #   make check-python  the Python binding's tests alone (Debian's python3-numpy)
 #   make bench      benchmarks, one JSON line per case
+#   make bench-peers  surfadapt against CGAL's isotropic remeshing, same run, same inputs
+#                   (bench/peers; only with Debian's libcgal-dev, never a dependency)
 #   make fuzz       FUZZ_SECONDS=60 : each libFuzzer harness for that long (clang)
 #   make soak       SOAK_SECONDS=600 SOAK_SEED= : random surfaces through random calls, every
 #                   call checked, for that long on one core (tests/soak)
@@ -323,6 +325,33 @@ $(FIDELITY): bench/fidelity.cpp build/apps/surfadapt/flows.o build/apps/surfadap
 bench: all $(BENCHES) $(FIDELITY)
 	@for b in $(BENCHES); do $$b || exit 1; done
 	@bench/bench_flows.sh
+
+# `make bench-peers`: surfadapt against CGAL's isotropic remeshing in the same run
+# (bench/peers/run.sh): the Enright test tracked by both, the shape error of both by
+# backtracing, and static remeshing of the demo's part and of jittered spheres. Only these
+# two programs include CGAL (header-only; Debian's libcgal-dev, which brings GMP and MPFR):
+# never the library, the tool, `make all` or `make check`. Without CGAL the target says
+# which package to install and fails, before building anything.
+PEER_ENRIGHT      := build/bench/peers/cgal_enright
+PEER_STATIC       := build/bench/peers/cgal_static
+PEER_ENRIGHT_OBJS := $(addprefix build/apps/surfadapt/,flows.o icosphere.o checkpoint.o obj_io.o format_io.o)
+PEER_STATIC_OBJS  := $(addprefix build/apps/surfadapt/,machined_part.o icosphere.o)
+# Optimised as CGAL's own builds are (-DNDEBUG: its checks are not part of what is timed).
+PEER_FLAGS := -std=c++17 -O2 -DNDEBUG $(OPENMP) $(WARNINGS) -Iinclude -Iapps/surfadapt -Ibench -Ibench/peers
+PEER_LIBS  := -Llib -lsurfadapt -lgmp -lmpfr -lm -Wl,-rpath,'$$ORIGIN/../../../lib'
+$(PEER_ENRIGHT): bench/peers/cgal_enright.cpp $(PEER_ENRIGHT_OBJS) $(LIB_SO) $(LIB_DEV)
+	@mkdir -p $(@D)
+	$(CXX) $(PEER_FLAGS) -MMD -MP -o $@ $< $(PEER_ENRIGHT_OBJS) $(PEER_LIBS)
+$(PEER_STATIC): bench/peers/cgal_static.cpp $(PEER_STATIC_OBJS) $(LIB_SO) $(LIB_DEV)
+	@mkdir -p $(@D)
+	$(CXX) $(PEER_FLAGS) -MMD -MP -o $@ $< $(PEER_STATIC_OBJS) $(PEER_LIBS)
+.PHONY: bench-peers
+bench-peers:
+	@echo '#include <CGAL/version.h>' | $(CXX) -x c++ -E - >/dev/null 2>&1 || \
+	  { echo "surfadapt: make bench-peers needs CGAL, Debian's libcgal-dev (apt-get install libcgal-dev); nothing else does" >&2; \
+	    exit 1; }
+	@$(MAKE) --no-print-directory all $(FIDELITY) $(PEER_ENRIGHT) $(PEER_STATIC)
+	@bench/peers/run.sh
 
 # ------------------------------------------------------------------ documentation
 doc: deps-doc
