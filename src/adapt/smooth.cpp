@@ -57,11 +57,12 @@ Vec3 tangent_target(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_
 // fold check and the crossing guard's query of each of their faces, and lifts a vertex that
 // the advection had put on the surface onto a fitted quadric, a little off it, at every
 // step. A fan that drifts further moves back the whole way, so the mesh stays that near its
-// equilibrium. Measured (one thread, medians, against moving every vertex): Enright 0.76x
-// the time, vortex T = 2 0.84x; at t = T the largest backtrace error fell from 1.4e-3 to
-// 1.0e-3 (Enright) and from 1.1e-3 to 5.5e-4 (vortex T = 2), the RMS a little. 0.1 (5 %)
-// was no faster and left the needles of test_adapt's blade (min angle 2.6 degrees instead
-// of 30): after merges a static mesh needs its sweeps; 0.02 saved half as much.
+// equilibrium. Measured (medians of alternating runs, against moving every vertex): the
+// Enright and vortex runs take 0.81x the time on one thread and on two; at t = T the
+// largest backtrace error fell from 1.4e-3 to 1.0e-3 (Enright) and from 1.1e-3 to 5.5e-4
+// (vortex T = 2), the RMS a little. 0.1 (5 %) was no faster and left the needles of
+// test_adapt's blade (min angle 2.6 degrees instead of 30): after merges a static mesh
+// needs its sweeps; 0.02 saved half as much.
 constexpr double settled_imbalance = 0.05;
 
 // Ridge (or boundary) vertex: moves only along its ridge, with the same equal-metric-length
