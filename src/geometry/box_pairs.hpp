@@ -30,7 +30,7 @@ inline bool boxes_overlap(const Box &a, const Box &b)
 // overlap nothing.
 template <class Visit>
 void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit &&visit,
-                               int threads = loop_threads())
+                               [[maybe_unused]] int threads = loop_threads()) // unused without OpenMP
 {
     const int32_t n = static_cast<int32_t>(boxes.size());
     std::vector<int32_t> small, large;
