@@ -57,8 +57,9 @@ Vec3 tangent_target(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_
 // fold check and the crossing guard's query of each of their faces, and lifts a vertex that
 // the advection had put on the surface onto a fitted quadric, a little off it, at every
 // step. A fan that drifts further moves back the whole way, so the mesh stays that near its
-// equilibrium. Measured (medians of alternating runs, against moving every vertex): the
-// Enright and vortex runs take 0.81x the time on one thread and on two; at t = T the
+// equilibrium. Measured (medians of alternating runs, against moving every vertex and
+// before three smaller changes worth about 0.93x): the Enright and vortex runs take 0.81x
+// the time on one thread and on two; at t = T the
 // largest backtrace error fell from 1.4e-3 to 1.0e-3 (Enright) and from 1.1e-3 to 5.5e-4
 // (vortex T = 2), the RMS a little. 0.1 (5 %) was no faster and left the needles of
 // test_adapt's blade (min angle 2.6 degrees instead of 30): after merges a static mesh
