@@ -239,13 +239,9 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t t = 0; t < n; ++t) {
         const Triangle &c = mesh.tri[t];
-        SweptTriangle &s = swept[t];
-        s.start = {mesh.pos[c[0]], mesh.pos[c[0]]};
-        s.motion = {dt * velocity[c[0]], dt * velocity[c[0]]};
-        for (int32_t v : {c[1], c[2]}) {
-            s.start = {s.start[0].cwiseMin(mesh.pos[v]), s.start[1].cwiseMax(mesh.pos[v])};
-            s.motion = {s.motion[0].cwiseMin(dt * velocity[v]), s.motion[1].cwiseMax(dt * velocity[v])};
-        }
+        const Vec3 x[3] = {mesh.pos[c[0]], mesh.pos[c[1]], mesh.pos[c[2]]};
+        const Vec3 d[3] = {dt * velocity[c[0]], dt * velocity[c[1]], dt * velocity[c[2]]};
+        swept[t] = swept_triangle(c, x, d);
         reach[t] = reach_of(mesh.pos[c[0]], mesh.pos[c[1]], mesh.pos[c[2]], velocity[c[0]], velocity[c[1]],
                             velocity[c[2]]);
     }
@@ -256,7 +252,7 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
         Approach &mine = per_thread[static_cast<size_t>(thread)];
         const Triangle &p = mesh.tri[s], &q = mesh.tri[t];
         if (share_a_vertex(p, q))
-            return; // neighbours: the fold control's concern
+            return; // neighbours, the fold control's concern (the blocks' sweep leaves them out already)
         if (out_of_reach(reach[s], reach[t], dt))
             return; // too far apart for how differently they move: most neighbours in a sheet
         PairMotion m;

@@ -27,7 +27,22 @@ namespace sfa {
 // corners' displacements over the step (each corner moves from x to x + d).
 struct SweptTriangle {
     Box start, motion;
+    Triangle corners; // two triangles that share one are neighbours, never compared
+    double scale;     // the largest coordinate of the two boxes, for their rounding
 };
+
+// Triangle `corners`, whose corners at x move by d over the step.
+inline SweptTriangle swept_triangle(const Triangle &corners, const Vec3 (&x)[3], const Vec3 (&d)[3])
+{
+    SweptTriangle s{{x[0], x[0]}, {d[0], d[0]}, corners, 0};
+    for (int k = 1; k < 3; ++k) {
+        s.start = {s.start[0].cwiseMin(x[k]), s.start[1].cwiseMax(x[k])};
+        s.motion = {s.motion[0].cwiseMin(d[k]), s.motion[1].cwiseMax(d[k])};
+    }
+    s.scale = std::max({s.start[0].cwiseAbs().maxCoeff(), s.start[1].cwiseAbs().maxCoeff(),
+                        s.motion[0].cwiseAbs().maxCoeff(), s.motion[1].cwiseAbs().maxCoeff()});
+    return s;
+}
 
 // The box a triangle sweeps in the frame displaced by w over the step: its start box and
 // its start box moved by its corners' displacements less w, widened by the rounding of
@@ -35,9 +50,7 @@ struct SweptTriangle {
 inline Box swept_in_frame(const SweptTriangle &t, const Vec3 &w)
 {
     const Vec3 low = (t.motion[0] - w).cwiseMin(Vec3::Zero()), high = (t.motion[1] - w).cwiseMax(Vec3::Zero());
-    const double rounding = 1e-14 * std::max({t.start[0].cwiseAbs().maxCoeff(), t.start[1].cwiseAbs().maxCoeff(),
-                                              t.motion[0].cwiseAbs().maxCoeff(), t.motion[1].cwiseAbs().maxCoeff(),
-                                              w.cwiseAbs().maxCoeff()});
+    const double rounding = 1e-14 * std::max(t.scale, w.cwiseAbs().maxCoeff());
     return {(t.start[0] + low).array() - rounding, (t.start[1] + high).array() + rounding};
 }
 
@@ -71,13 +84,14 @@ inline double mean_extent(const std::vector<Box> &boxes)
 // Blocks are this many times the mean size of a triangle's box: small enough that the
 // surface in one moves nearly as one, large enough that few of its triangles lie near its
 // faces (those are compared again, as guests of the neighbouring block). 8, 12 and 16 took
-// the same time on Enright and vortex T = 2; 4 took 10 % longer.
+// the same time on Enright and vortex T = 2 (and 8 and 12 on bench_collision's sphere,
+// 6 and 16 longer); 4 took 10 % longer.
 constexpr double swept_pairs_block_size = 12;
 
-// Calls visit(s, t, thread), s < t, once for every two triangles whose swept boxes overlap
-// in the frame of the block one of them lies in (so at least for every two that can meet
-// over the step), from parallel loops; `thread` is the calling thread's index for
-// visit's own scratch.
+// Calls visit(s, t, thread), s < t, once for every two triangles that share no corner and
+// whose swept boxes overlap in the frame of the block one of them lies in (so at least for
+// every two that share no corner and can meet over the step), from parallel loops;
+// `thread` is the calling thread's index for visit's own scratch.
 template <class Visit>
 void for_each_pair_that_may_meet(const std::vector<SweptTriangle> &triangles, Visit &&visit)
 {
@@ -85,18 +99,24 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle> &triangles, Vi
     const int32_t n = static_cast<int32_t>(triangles.size());
     if (n < 2)
         return;
-    std::vector<Box> start(static_cast<size_t>(n)), at_rest_each(static_cast<size_t>(n));
-    for (int32_t t = 0; t < n; ++t) {
-        start[t] = triangles[t].start;
-        at_rest_each[t] = swept_in_frame(triangles[t], Vec3::Zero());
-    }
     // The size of a triangle, or where every one is a point, of the way it moves.
-    double edge = detail::mean_extent(start);
-    if (!(edge > 0))
-        edge = detail::mean_extent(at_rest_each);
+    double edge = 0;
+    size_t sized = 0;
     Vec3 lowest = Vec3::Constant(std::numeric_limits<double>::infinity());
-    for (const Box &b : start)
-        lowest = lowest.cwiseMin(b[0]); // a NaN corner leaves it as it was
+    for (const SweptTriangle &t : triangles) {
+        if (const double extent = (t.start[1] - t.start[0]).maxCoeff(); std::isfinite(extent)) {
+            edge += extent;
+            ++sized;
+        }
+        lowest = lowest.cwiseMin(t.start[0]); // a NaN corner leaves it as it was
+    }
+    edge = sized ? edge / static_cast<double>(sized) : 0;
+    if (!(edge > 0)) {
+        std::vector<Box> at_rest_each(static_cast<size_t>(n));
+        for (int32_t t = 0; t < n; ++t)
+            at_rest_each[t] = swept_in_frame(triangles[t], Vec3::Zero());
+        edge = detail::mean_extent(at_rest_each);
+    }
     if (!(edge > 0) || !lowest.allFinite())
         return; // every triangle a point at rest, or every one NaN: none comes to meet another
     // Each triangle's block is that of its start box's lowest corner; the blocks in the
@@ -104,7 +124,7 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle> &triangles, Vi
     const CellFrame blocks_frame{lowest, swept_pairs_block_size * edge};
     std::vector<std::pair<uint64_t, int32_t>> keyed(static_cast<size_t>(n));
     for (int32_t t = 0; t < n; ++t)
-        keyed[t] = {cell_key(blocks_frame.cell_of(start[t][0])), t};
+        keyed[t] = {cell_key(blocks_frame.cell_of(triangles[t].start[0])), t};
     std::sort(keyed.begin(), keyed.end());
     std::vector<int32_t> order(static_cast<size_t>(n)), block_start = {0};
     for (int32_t i = 0; i < n; ++i) {
@@ -116,9 +136,15 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle> &triangles, Vi
     const int32_t blocks = static_cast<int32_t>(block_start.size()) - 1;
 
     // Each block's frame (its triangles' mean displacement), the union of its triangles'
-    // boxes swept in it, and the union swept at rest, which finds the blocks near it.
+    // boxes swept in it, and the union swept at rest, which finds the blocks near it; and
+    // what bounds its triangles' boxes in any other frame (`around`).
     std::vector<Vec3> frame(static_cast<size_t>(blocks));
     std::vector<Box> reach(static_cast<size_t>(blocks)), at_rest(static_cast<size_t>(blocks));
+    struct Around {
+        Box start, motion; // the unions of its triangles' boxes
+        double scale;      // the largest of their scales
+    };
+    std::vector<Around> around(static_cast<size_t>(blocks));
 #pragma omp parallel for num_threads(loop_threads()) schedule(static) if (blocks > 1)
     for (int32_t b = 0; b < blocks; ++b) {
         Vec3 sum = Vec3::Zero();
@@ -127,11 +153,17 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle> &triangles, Vi
         frame[b] = sum / (block_start[b + 1] - block_start[b]);
         if (!frame[b].allFinite())
             frame[b] = Vec3::Zero();
-        reach[b] = swept_in_frame(triangles[order[block_start[b]]], frame[b]);
-        at_rest[b] = at_rest_each[order[block_start[b]]];
+        const SweptTriangle &first = triangles[order[block_start[b]]];
+        reach[b] = swept_in_frame(first, frame[b]);
+        at_rest[b] = swept_in_frame(first, Vec3::Zero());
+        around[b] = {first.start, first.motion, first.scale};
         for (int32_t i = block_start[b] + 1; i < block_start[b + 1]; ++i) {
-            reach[b] = box_union(reach[b], swept_in_frame(triangles[order[i]], frame[b]));
-            at_rest[b] = box_union(at_rest[b], at_rest_each[order[i]]);
+            const SweptTriangle &t = triangles[order[i]];
+            reach[b] = box_union(reach[b], swept_in_frame(t, frame[b]));
+            at_rest[b] = box_union(at_rest[b], swept_in_frame(t, Vec3::Zero()));
+            around[b].start = box_union(around[b].start, t.start);
+            around[b].motion = box_union(around[b].motion, t.motion);
+            around[b].scale = std::max(around[b].scale, t.scale);
         }
     }
     // Two triangles that can meet have overlapping boxes at rest, so their blocks have too.
@@ -155,43 +187,135 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle> &triangles, Vi
 
     // Block b's pairs, in its frame: its own triangles with each other and with the guests,
     // those of the blocks after it whose boxes swept in its frame reach into its own (two
-    // guests are not its pair). On `threads` threads; visit is told `thread` if that is 1.
-    const auto compare_block = [&](int32_t b, std::vector<Box> &boxes, std::vector<int32_t> &index, int threads,
-                                   int thread) {
-        boxes.clear();
-        index.clear();
-        for (int32_t i = block_start[b]; i < block_start[b + 1]; ++i) {
-            boxes.push_back(swept_in_frame(triangles[order[i]], frame[b]));
-            index.push_back(order[i]);
-        }
-        const size_t own = boxes.size();
+    // guests are not its pair). A block holds a few hundred boxes, nearly all of them about
+    // a triangle's size in its frame. They are cut into strips across the axis on which
+    // their low corners spread second most, each box in every strip it covers, and in
+    // each strip sorted along the axis of most spread; each box is compared with those
+    // that follow it in its strip until one starts beyond its end (sweep and prune), and
+    // a pair counts in the first strip both cover. Without the strips a box would be
+    // compared with every box of a slab across the block, about forty on a sheet. (A grid
+    // per block, which this replaced, made bench_collision's sphere 1.5 times as long.)
+    struct Entry {
+        Box box;
+        int32_t triangle;
+        bool own; // block b's, not a guest
+    };
+    // A box in the sweep: on the sweep axis, the strip axis and the third, low then high;
+    // with all that decides whether a pair in its strip is visited.
+    struct Row {
+        double span[6];
+        Triangle corners;
+        int32_t first_strip; // the first strip the box covers
+        int32_t own;         // 1 if the triangle is the block's, 0 if a guest
+    };
+    struct Sweep {
+        std::vector<std::pair<double, int32_t>> by_low; // (low on the sweep axis, entry)
+        std::vector<int32_t> strip_start, strip_fill;
+        std::vector<Row> rows;       // strip by strip, each in order of low on the sweep axis
+        std::vector<int32_t> triangle; // of each row
+    };
+    const auto compare_block = [&](int32_t b, std::vector<Entry> &entries, Sweep &sweep, int thread) {
+        entries.clear();
+        for (int32_t i = block_start[b]; i < block_start[b + 1]; ++i)
+            entries.push_back({swept_in_frame(triangles[order[i]], frame[b]), order[i], true});
         for (size_t p = after_start[b]; p < after_start[b + 1]; ++p) {
             const int32_t other = near[p].second;
+            // Each of its boxes in this frame lies in this one (swept_in_frame's sums, each
+            // term no larger; the rounding no smaller): most blocks near at rest are not.
+            const Around &o = around[other];
+            if (!boxes_overlap(swept_in_frame(SweptTriangle{o.start, o.motion, {}, o.scale}, frame[b]), reach[b]))
+                continue;
             for (int32_t i = block_start[other]; i < block_start[other + 1]; ++i)
-                if (const Box box = swept_in_frame(triangles[order[i]], frame[b]); boxes_overlap(box, reach[b])) {
-                    boxes.push_back(box);
-                    index.push_back(order[i]);
-                }
+                if (const Box box = swept_in_frame(triangles[order[i]], frame[b]); boxes_overlap(box, reach[b]))
+                    entries.push_back({box, order[i], false});
         }
-        const double cell = detail::mean_extent(boxes);
-        for_each_overlapping_pair(
-            boxes, cell > 0 ? cell : edge,
-            [&](int32_t i, int32_t j) {
-                if (static_cast<size_t>(i) < own)
-                    visit(std::min(index[i], index[j]), std::max(index[i], index[j]),
-                          threads > 1 ? thread_index() : thread);
-            },
-            threads);
+        Vec3 sum = Vec3::Zero(), square = Vec3::Zero(), extent = Vec3::Zero();
+        Box bounds = {Vec3::Constant(std::numeric_limits<double>::infinity()),
+                      Vec3::Constant(-std::numeric_limits<double>::infinity())};
+        sweep.by_low.clear();
+        for (size_t e = 0; e < entries.size(); ++e)
+            if (const Box &box = entries[e].box; box[0].allFinite() && box[1].allFinite()) { // NaN overlaps nothing
+                sum += box[0];
+                square += box[0].cwiseAbs2();
+                extent += box[1] - box[0];
+                bounds = {bounds[0].cwiseMin(box[0]), bounds[1].cwiseMax(box[1])};
+                sweep.by_low.push_back({0, static_cast<int32_t>(e)});
+            }
+        const double count = static_cast<double>(sweep.by_low.size());
+        if (count < 2)
+            return;
+        const Vec3 spread = square / count - (sum / count).cwiseAbs2();
+        int axis[3];
+        spread.maxCoeff(&axis[0]);
+        axis[1] = (axis[0] + 1) % 3;
+        axis[2] = (axis[0] + 2) % 3;
+        if (spread[axis[2]] > spread[axis[1]])
+            std::swap(axis[1], axis[2]);
+        // Strips two boxes wide, at most max_strips (so that a box is entered that many times at most).
+        constexpr int max_strips = 16;
+        const double low = bounds[0][axis[1]], range = bounds[1][axis[1]] - low;
+        const double wanted = 2 * extent[axis[1]] / count;
+        const int strips =
+            wanted > 0 ? static_cast<int>(std::clamp(std::ceil(range / wanted), 1.0, double{max_strips})) : 1;
+        const double width = range / strips;
+        const auto strip_of = [&](double x) { // monotonic in x
+            return strips == 1 ? 0 : std::min(strips - 1, static_cast<int>((x - low) / width));
+        };
+        // Sorted once along the sweep axis, then dealt into the strips in that order.
+        for (auto &o : sweep.by_low)
+            o.first = entries[static_cast<size_t>(o.second)].box[0][axis[0]];
+        std::sort(sweep.by_low.begin(), sweep.by_low.end());
+        sweep.strip_start.assign(static_cast<size_t>(strips) + 1, 0);
+        for (const auto &o : sweep.by_low) {
+            const Box &box = entries[static_cast<size_t>(o.second)].box;
+            for (int s = strip_of(box[0][axis[1]]), last = strip_of(box[1][axis[1]]); s <= last; ++s)
+                ++sweep.strip_start[static_cast<size_t>(s) + 1];
+        }
+        for (int s = 0; s < strips; ++s)
+            sweep.strip_start[s + 1] += sweep.strip_start[s];
+        sweep.strip_fill.assign(sweep.strip_start.begin(), sweep.strip_start.end() - 1);
+        sweep.rows.resize(static_cast<size_t>(sweep.strip_start[strips]));
+        sweep.triangle.resize(sweep.rows.size());
+        for (const auto &o : sweep.by_low) {
+            const Entry &e = entries[static_cast<size_t>(o.second)];
+            Row row;
+            for (int k = 0; k < 3; ++k) {
+                row.span[k] = e.box[0][axis[k]];
+                row.span[3 + k] = e.box[1][axis[k]];
+            }
+            row.corners = triangles[e.triangle].corners;
+            row.first_strip = strip_of(e.box[0][axis[1]]);
+            row.own = e.own;
+            for (int s = row.first_strip, last = strip_of(e.box[1][axis[1]]); s <= last; ++s) {
+                const int32_t at = sweep.strip_fill[s]++;
+                sweep.rows[at] = row;
+                sweep.triangle[at] = e.triangle;
+            }
+        }
+        for (int s = 0; s < strips; ++s)
+            for (int32_t i = sweep.strip_start[s], end = sweep.strip_start[s + 1]; i < end; ++i) {
+                const Row a = sweep.rows[i];
+                for (int32_t j = i + 1; j < end && sweep.rows[j].span[0] <= a.span[3]; ++j) {
+                    const Row &c = sweep.rows[j];
+                    // One branch, nearly always not taken: & rather than &&.
+                    const bool shared = (a.corners[0] == c.corners[0]) | (a.corners[0] == c.corners[1]) |
+                                        (a.corners[0] == c.corners[2]) | (a.corners[1] == c.corners[0]) |
+                                        (a.corners[1] == c.corners[1]) | (a.corners[1] == c.corners[2]) |
+                                        (a.corners[2] == c.corners[0]) | (a.corners[2] == c.corners[1]) |
+                                        (a.corners[2] == c.corners[2]);
+                    if ((c.span[1] <= a.span[4]) & (a.span[1] <= c.span[4]) & (c.span[2] <= a.span[5]) &
+                        (a.span[2] <= c.span[5]) & (std::max(a.first_strip, c.first_strip) == s) &
+                        ((a.own | c.own) != 0) & !shared)
+                        visit(std::min(sweep.triangle[i], sweep.triangle[j]),
+                              std::max(sweep.triangle[i], sweep.triangle[j]), thread);
+                }
+            }
     };
-    std::vector<Box> boxes;
-    std::vector<int32_t> index;
-    if (blocks == 1) { // a small surface: the threads share its one block
-        compare_block(0, boxes, index, loop_threads(), 0);
-        return;
-    }
-#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 1) firstprivate(boxes, index)
+    std::vector<Entry> entries;
+    Sweep sweep;
+#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 1) firstprivate(entries, sweep)
     for (int32_t b = 0; b < blocks; ++b)
-        compare_block(b, boxes, index, 1, thread_index()); // nested loops would number threads from 0
+        compare_block(b, entries, sweep, thread_index());
 }
 
 } // namespace sfa

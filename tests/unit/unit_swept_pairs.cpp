@@ -48,13 +48,9 @@ std::vector<SweptTriangle> swept(const Moving &m)
 {
     std::vector<SweptTriangle> out(static_cast<size_t>(m.count()));
     for (int32_t t = 0; t < m.count(); ++t) {
-        SweptTriangle &s = out[t];
-        s.start = {m.x[3 * t], m.x[3 * t]};
-        s.motion = {m.d[3 * t], m.d[3 * t]};
-        for (int k = 1; k < 3; ++k) {
-            s.start = {s.start[0].cwiseMin(m.x[3 * t + k]), s.start[1].cwiseMax(m.x[3 * t + k])};
-            s.motion = {s.motion[0].cwiseMin(m.d[3 * t + k]), s.motion[1].cwiseMax(m.d[3 * t + k])};
-        }
+        const Vec3 x[3] = {m.x[3 * t], m.x[3 * t + 1], m.x[3 * t + 2]};
+        const Vec3 d[3] = {m.d[3 * t], m.d[3 * t + 1], m.d[3 * t + 2]};
+        out[t] = swept_triangle({3 * t, 3 * t + 1, 3 * t + 2}, x, d);
     }
     return out;
 }
@@ -150,6 +146,64 @@ void a_surface_moving_as_one_visits_its_neighbours_only(void **)
     assert_true(pairs.size() < 20 * static_cast<size_t>(m.count()));
 }
 
+// A sheet whose triangles share their corners, folded so that its two halves pass through
+// each other during the step: no two triangles with a corner in common are visited (they
+// are neighbours, the fold control's concern), and every other two that meet are.
+void neighbours_are_not_visited(void **)
+{
+    constexpr int n = 24;
+    std::vector<Vec3> x, d;
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j) {
+            const double u = static_cast<double>(i) / n, v = static_cast<double>(j) / n;
+            x.push_back(Vec3(u, v, 0.02 * std::cos(6 * u)));
+            d.push_back(Vec3(0.3, 0, u > 0.5 ? -0.2 : 0.2) + 0.05 * Vec3(v, -u, 0)); // the halves cross
+        }
+    const auto corner = [](int i, int j) { return static_cast<int32_t>(i * (n + 1) + j); };
+    std::vector<Triangle> tri;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            tri.push_back({corner(i, j), corner(i + 1, j), corner(i + 1, j + 1)});
+            tri.push_back({corner(i, j), corner(i + 1, j + 1), corner(i, j + 1)});
+        }
+    // The second half of the sheet moved onto the first, so that they overlap.
+    for (Vec3 &p : x)
+        if (p.x() > 0.5)
+            p = Vec3(p.x() - 0.5, p.y(), p.z() + 0.01);
+    std::vector<SweptTriangle> swept;
+    for (const Triangle &t : tri) {
+        const Vec3 at[3] = {x[t[0]], x[t[1]], x[t[2]]}, by[3] = {d[t[0]], d[t[1]], d[t[2]]};
+        swept.push_back(swept_triangle(t, at, by));
+    }
+    std::set<std::pair<int32_t, int32_t>> pairs;
+    for_each_pair_that_may_meet(swept, [&](int32_t s, int32_t t, int) {
+        if (share_a_vertex(tri[s], tri[t]))
+            fail_msg("triangles %d and %d share a corner but were visited", s, t);
+#pragma omp critical
+        pairs.insert({s, t});
+    });
+    int meeting = 0;
+    for (int32_t s = 0; s < static_cast<int32_t>(tri.size()); ++s)
+        for (int32_t t = s + 1; t < static_cast<int32_t>(tri.size()); ++t) {
+            if (share_a_vertex(tri[s], tri[t]))
+                continue;
+            bool meet = false;
+            for (int k = 0; k <= 16 && !meet; ++k) {
+                const double h = k / 16.0;
+                const Triangle &p = tri[s], &q = tri[t];
+                meet = triangles_intersect(x[p[0]] + h * d[p[0]], x[p[1]] + h * d[p[1]], x[p[2]] + h * d[p[2]],
+                                           x[q[0]] + h * d[q[0]], x[q[1]] + h * d[q[1]], x[q[2]] + h * d[q[2]]);
+            }
+            if (meet) {
+                ++meeting;
+                if (!pairs.count({s, t}))
+                    fail_msg("triangles %d and %d meet during the step but were not visited", s, t);
+            }
+        }
+    print_message("%d pairs meet, %zu visited\n", meeting, pairs.size());
+    assert_true(meeting > 100);
+}
+
 } // namespace
 
 int main()
@@ -157,6 +211,7 @@ int main()
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(every_pair_that_meets_is_visited_once),
         cmocka_unit_test(a_surface_moving_as_one_visits_its_neighbours_only),
+        cmocka_unit_test(neighbours_are_not_visited),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
