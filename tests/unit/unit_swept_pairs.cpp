@@ -204,6 +204,21 @@ void neighbours_are_not_visited(void **)
     assert_true(meeting > 100);
 }
 
+// The blocks' numbering: distinct keys numbered in the order they first come, equal keys
+// alike, through the table's growth (5,000 distinct keys, its first size 1,024).
+void keys_are_numbered_in_order_of_first_coming(void **)
+{
+    std::vector<uint64_t> key;
+    for (uint64_t round = 0; round < 3; ++round)
+        for (uint64_t k = 0; k < 5000; ++k)
+            key.push_back(k << 42 | (k % 7) << 21 | k); // distinct, as cell keys are
+    std::vector<int32_t> number;
+    assert_int_equal(detail::number_by_key(key, number), 5000);
+    for (size_t i = 0; i < key.size(); ++i)
+        if (number[i] != static_cast<int32_t>(i % 5000))
+            fail_msg("key %zu numbered %d, not %zu", i, number[i], i % 5000);
+}
+
 } // namespace
 
 int main()
@@ -212,6 +227,7 @@ int main()
         cmocka_unit_test(every_pair_that_meets_is_visited_once),
         cmocka_unit_test(a_surface_moving_as_one_visits_its_neighbours_only),
         cmocka_unit_test(neighbours_are_not_visited),
+        cmocka_unit_test(keys_are_numbered_in_order_of_first_coming),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
