@@ -272,7 +272,7 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle> &triangles, Vi
     struct Sweep {
         std::vector<std::pair<double, int32_t>> by_low; // (low on the sweep axis, entry)
         std::vector<int32_t> strip_start, strip_fill;
-        std::vector<Row> rows;       // strip by strip, each in order of low on the sweep axis
+        std::vector<Row> rows;         // strip by strip, each in order of low on the sweep axis
         std::vector<int32_t> triangle; // of each row
     };
     const auto compare_block = [&](int32_t b, std::vector<Entry> &entries, Sweep &sweep, int thread) {
