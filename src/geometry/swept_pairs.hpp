@@ -363,14 +363,12 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle> &triangles, Vi
                 for (int32_t j = i + 1; j < end && sweep.rows[j].span[0] <= a.span[3]; ++j) {
                     const Row &c = sweep.rows[j];
                     // One branch, nearly always not taken: & rather than &&.
-                    const bool shared = (a.corners[0] == c.corners[0]) | (a.corners[0] == c.corners[1]) |
-                                        (a.corners[0] == c.corners[2]) | (a.corners[1] == c.corners[0]) |
-                                        (a.corners[1] == c.corners[1]) | (a.corners[1] == c.corners[2]) |
-                                        (a.corners[2] == c.corners[0]) | (a.corners[2] == c.corners[1]) |
-                                        (a.corners[2] == c.corners[2]);
+                    const auto same = [&](int u, int v) { return static_cast<int>(a.corners[u] == c.corners[v]); };
+                    const int shared = same(0, 0) | same(0, 1) | same(0, 2) | same(1, 0) | same(1, 1) | same(1, 2) |
+                                       same(2, 0) | same(2, 1) | same(2, 2);
                     if ((c.span[1] <= a.span[4]) & (a.span[1] <= c.span[4]) & (c.span[2] <= a.span[5]) &
                         (a.span[2] <= c.span[5]) & (std::max(a.first_strip, c.first_strip) == s) &
-                        ((a.own | c.own) != 0) & !shared)
+                        ((a.own | c.own) != 0) & (shared == 0))
                         visit(std::min(sweep.triangle[i], sweep.triangle[j]),
                               std::max(sweep.triangle[i], sweep.triangle[j]), thread);
                 }
