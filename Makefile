@@ -317,6 +317,10 @@ build/bench/%: bench/%.c $(TEST_SUPPORT_OBJ) $(LIB_SO) $(LIB_DEV)
 build/bench/%: bench/%.cpp $(TEST_SUPPORT_OBJ) $(LIB_A)
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -Ibench -Iapps/surfadapt -o $@ $< $(TEST_SUPPORT_OBJ) $(LIB_A) -lm
+# bench_collision moves its surface by the tool's Enright field.
+build/bench/bench_collision: bench/bench_collision.cpp build/apps/surfadapt/flows.o $(TEST_SUPPORT_OBJ) $(LIB_A)
+	@mkdir -p $(@D)
+	$(CXX) $(CXXFLAGS) -Ibench -Iapps/surfadapt -o $@ $< build/apps/surfadapt/flows.o $(TEST_SUPPORT_OBJ) $(LIB_A) -lm
 # The backtrace needs the flows' velocity fields and the checkpoint header of the tool.
 $(FIDELITY): bench/fidelity.cpp build/apps/surfadapt/flows.o build/apps/surfadapt/checkpoint.o \
              build/apps/surfadapt/obj_io.o build/apps/surfadapt/format_io.o $(LIB_A)

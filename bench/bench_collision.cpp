@@ -7,6 +7,7 @@
 // flat to a lens a hundredth as thick, whose two sides face each other nearer than an edge
 // all over, moved by the same field pressed flat. Internal: links the static library. One JSON line per
 // surface: the median of several runs on one thread, and the time per triangle.
+#include "flows.hpp"
 #include "geometry/collision_time.hpp"
 #include "mesh/parallel.hpp"
 #include "mesh/validate.hpp"
@@ -16,7 +17,6 @@ extern "C" {
 #include "timing.h"
 }
 
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
@@ -27,16 +27,21 @@ namespace {
 
 constexpr int runs = 7, frequency = 100;
 
-// The Enright deformation field (paper §5.2.2) at t = 0, on a sphere of radius 0.15
-// around (0.35, 0.35, 0.35) mapped to the unit sphere.
-Vec3 enright_velocity(const Vec3 &unit)
+// The Enright deformation field (the tool's, paper §5.2.2) at t = 0 on a sphere of radius
+// 0.15 around (0.35, 0.35, 0.35), as the flow's start, scaled to the unit sphere.
+std::vector<Vec3> enright_velocity_on_unit_sphere(const std::vector<Vec3> &unit)
 {
-    const Vec3 p = Vec3::Constant(0.35) + 0.15 * unit;
-    const double pi = 3.14159265358979323846;
-    const double sx = std::sin(pi * p.x()), sy = std::sin(pi * p.y()), sz = std::sin(pi * p.z());
-    const double s2x = std::sin(2 * pi * p.x()), s2y = std::sin(2 * pi * p.y()), s2z = std::sin(2 * pi * p.z());
-    // Scaled back to the unit sphere, as the positions are.
-    return Vec3(2 * sx * sx * s2y * s2z, -sy * sy * s2x * s2z, -sz * sz * s2x * s2y) / 0.15;
+    constexpr double radius = 0.15;
+    std::vector<double> xyz, velocity(3 * unit.size());
+    for (const Vec3 &u : unit)
+        for (int k = 0; k < 3; ++k)
+            xyz.push_back(0.35 + radius * u[k]);
+    FlowPeriod period{3};
+    enright_velocity(&period, static_cast<int32_t>(unit.size()), xyz.data(), 0, velocity.data());
+    std::vector<Vec3> scaled(unit.size());
+    for (size_t v = 0; v < unit.size(); ++v)
+        scaled[v] = Vec3(velocity[3 * v], velocity[3 * v + 1], velocity[3 * v + 2]) / radius;
+    return scaled;
 }
 
 void time_first_approach(const char *surface, const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt)
@@ -70,9 +75,7 @@ int main(int argc, char **)
     TriMesh mesh = validated_mesh(MeshInput{nverts, xyz, ntris, tris, 0, false});
     std::free(xyz);
     std::free(tris);
-    std::vector<Vec3> velocity(mesh.pos.size());
-    for (size_t v = 0; v < velocity.size(); ++v)
-        velocity[v] = enright_velocity(mesh.pos[v]);
+    std::vector<Vec3> velocity = enright_velocity_on_unit_sphere(mesh.pos);
     const double dt = 0.015; // the paper's Enright step
     time_first_approach("jittered_sphere", mesh, velocity, dt);
     if (sphere_only)
