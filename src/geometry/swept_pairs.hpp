@@ -197,14 +197,12 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle> &triangles, Vi
 
     // Each block's frame (its triangles' mean displacement), the union of its triangles'
     // boxes swept in it, and the union swept at rest, which finds the blocks near it; and
-    // for each of its parts what bounds its triangles' boxes in any other frame.
+    // for each of its parts what bounds its triangles' boxes in any other frame: a swept
+    // triangle whose boxes are the unions of theirs and whose scale is the largest (its
+    // corners unused).
     std::vector<Vec3> frame(static_cast<size_t>(blocks));
     std::vector<Box> reach(static_cast<size_t>(blocks)), at_rest(static_cast<size_t>(blocks));
-    struct Around {
-        Box start, motion; // the unions of its triangles' boxes
-        double scale;      // the largest of their scales
-    };
-    std::vector<Around> around(8 * static_cast<size_t>(blocks));
+    std::vector<SweptTriangle> around(8 * static_cast<size_t>(blocks));
     const Vec3 none = Vec3::Constant(std::numeric_limits<double>::quiet_NaN()); // a union adds nothing to it
 #pragma omp parallel for num_threads(loop_threads()) schedule(static) if (blocks > 1)
     for (int32_t b = 0; b < blocks; ++b) {
@@ -216,7 +214,7 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle> &triangles, Vi
             frame[b] = Vec3::Zero();
         reach[b] = at_rest[b] = {none, none};
         for (size_t p = 8 * static_cast<size_t>(b); p < 8 * static_cast<size_t>(b) + 8; ++p) {
-            around[p] = {{none, none}, {none, none}, 0};
+            around[p] = {{none, none}, {none, none}, {}, 0};
             for (int32_t i = part_start[p]; i < part_start[p + 1]; ++i) {
                 const SweptTriangle &t = triangles[order[i]];
                 reach[b] = box_union(reach[b], swept_in_frame(t, frame[b]));
@@ -285,9 +283,7 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle> &triangles, Vi
                 // Each of the part's boxes in this frame lies in this one (swept_in_frame's
                 // sums, each term no larger; the rounding no smaller): most parts of a block
                 // near at rest are not near in this frame.
-                const Around &o = around[q];
-                if (part_start[q] == part_start[q + 1] ||
-                    !boxes_overlap(swept_in_frame(SweptTriangle{o.start, o.motion, {}, o.scale}, frame[b]), reach[b]))
+                if (part_start[q] == part_start[q + 1] || !boxes_overlap(swept_in_frame(around[q], frame[b]), reach[b]))
                     continue;
                 for (int32_t i = part_start[q]; i < part_start[q + 1]; ++i)
                     if (const Box box = swept_in_frame(triangles[order[i]], frame[b]); boxes_overlap(box, reach[b]))
