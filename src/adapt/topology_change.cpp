@@ -99,12 +99,6 @@ public:
 private:
     double length_at(int32_t v) const { return data_.size.empty() ? l_ : data_.size[v]; }
     double merge_distance(int32_t a, int32_t b) const { return ratio_ * 0.5 * (length_at(a) + length_at(b)); }
-    // The normal of h's edge: the mean of its triangles'.
-    Vec3 edge_normal(int32_t h) const
-    {
-        return (unit_normal(pos_, mesh_.tri[TriMesh::face(h)]) + unit_normal(pos_, mesh_.tri[TriMesh::face(mesh_.opp[h])]))
-            .normalized();
-    }
     bool far_from_events(const Vec3 &x, double spacing) const
     {
         return std::all_of(events_.begin(), events_.end(),
@@ -144,7 +138,18 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
     // round, so that two edges closer than d have overlapping boxes.
     std::vector<int32_t> edges;
     std::vector<Box> boxes;
-    std::vector<Vec3> normals; // each edge's, once: most pairs are two edges of one sheet, not facing
+    std::vector<Vec3> normals; // each edge's, once
+    // Most overlapping pairs are two edges of one sheet, whose normals cannot face: each
+    // edge's normal is classed by its largest component's axis and sign, and two of one
+    // class are never compared (their dot product is at least 1/3 - 2/3 > facing_cosine).
+    static_assert(facing_cosine < -1.0 / 3);
+    std::vector<int8_t> normal_class;
+    const int32_t faces = mesh_.num_triangles();
+    std::vector<Vec3> face_normals(static_cast<size_t>(faces));
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t f = 0; f < faces; ++f)
+        if (is_live(mesh_.tri[f]))
+            face_normals[f] = unit_normal(pos_, mesh_.tri[f]);
     double cell = 0;
     for (int32_t h = 0; h < static_cast<int32_t>(mesh_.opp.size()); ++h) {
         if (mesh_.opp[h] < 0 || mesh_.opp[h] > h)
@@ -152,7 +157,11 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
         const int32_t a = mesh_.tail(h), b = mesh_.head(h);
         const Vec3 grow = Vec3::Constant(0.5 * merge_distance(a, b));
         edges.push_back(h);
-        normals.push_back(edge_normal(h));
+        // The edge's normal: the mean of its triangles'.
+        normals.push_back((face_normals[TriMesh::face(h)] + face_normals[TriMesh::face(mesh_.opp[h])]).normalized());
+        int axis = 0;
+        normals.back().cwiseAbs().maxCoeff(&axis);
+        normal_class.push_back(static_cast<int8_t>(2 * axis + (normals.back()[axis] < 0)));
         boxes.push_back({pos_[a].cwiseMin(pos_[b]) - grow, pos_[a].cwiseMax(pos_[b]) + grow});
         cell += (pos_[b] - pos_[a]).norm() + 2 * grow[0];
     }
@@ -160,7 +169,8 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
         return {};
     cell /= static_cast<double>(edges.size());
     std::vector<std::vector<MergeCandidate>> found(static_cast<size_t>(loop_threads()));
-    for_each_overlapping_pair(boxes, cell, [&](int32_t s, int32_t t) {
+    const auto class_of = [&](int32_t s) { return normal_class[s]; };
+    for_each_overlapping_pair_across(boxes, class_of, cell, [&](int32_t s, int32_t t) {
         const Vec3 &n1 = normals[s], &n2 = normals[t];
         if (!(n1.dot(n2) < facing_cosine))
             return;

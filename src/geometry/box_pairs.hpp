@@ -12,6 +12,7 @@
 
 #include <array>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace sfa {
@@ -23,14 +24,16 @@ inline bool boxes_overlap(const Box &a, const Box &b)
     return (a[0] - b[1]).maxCoeff() <= 0 && (b[0] - a[1]).maxCoeff() <= 0;
 }
 
-// Calls visit(s, t), s < t, once for every two overlapping boxes, from parallel loops of
-// `threads` threads (visit may use thread_index() for its own scratch; called from a
-// parallel loop of its own, pass 1: a nested loop would number its threads from 0 again).
-// `cell` is the grid's cell size, about the size of a typical box. Boxes with a NaN corner
-// overlap nothing.
-template <class Visit>
-void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit &&visit,
-                               [[maybe_unused]] int threads = loop_threads()) // unused without OpenMP
+// Calls visit(s, t), s < t, once for every two overlapping boxes in different groups
+// (group(s) != group(t), ints), from parallel loops of `threads` threads (visit may use
+// thread_index() for its own scratch; called from a parallel loop of its own, pass 1: a
+// nested loop would number its threads from 0 again). `cell` is the grid's cell size,
+// about the size of a typical box. Boxes with a NaN corner overlap nothing. The groups are
+// compared before the boxes, in the grid's own copy: where most overlapping pairs are of
+// one group and never wanted, they cost a comparison of two ints each.
+template <class Group, class Visit>
+void for_each_overlapping_pair_across(const std::vector<Box> &boxes, Group &&group, double cell, Visit &&visit,
+                                      [[maybe_unused]] int threads = loop_threads()) // unused without OpenMP
 {
     const int32_t n = static_cast<int32_t>(boxes.size());
     std::vector<int32_t> small, large;
@@ -51,17 +54,21 @@ void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit
             Box box;
             GridCell first; // the cell of the box's lowest corner
             int32_t index;  // in `boxes`
+            int32_t group;
         };
         SpatialGrid<Entry> grid; // entries in increasing order of index
         grid.build(CellFrame{lowest, cell}, static_cast<int32_t>(small.size()),
                    [&](int32_t m) { return boxes[small[m]]; },
-                   [&](int32_t m, const GridCell &first) { return Entry{boxes[small[m]], first, small[m]}; });
+                   [&](int32_t m, const GridCell &first) {
+                       return Entry{boxes[small[m]], first, small[m], static_cast<int32_t>(group(small[m]))};
+                   });
         const int64_t buckets = static_cast<int64_t>(grid.bucket_count());
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
         for (int64_t b = 0; b < buckets; ++b)
             grid.for_each_pair_in_bucket(static_cast<size_t>(b), [&](const Entry &m, const Entry &k, uint64_t here) {
                 // Each pair once: in the first cell both boxes cover.
-                if (cell_key(first_shared_cell(m.first, k.first)) == here && boxes_overlap(m.box, k.box))
+                if (m.group != k.group && cell_key(first_shared_cell(m.first, k.first)) == here &&
+                    boxes_overlap(m.box, k.box))
                     visit(m.index, k.index);
             });
     }
@@ -70,9 +77,18 @@ void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit
     for (int64_t i = 0; i < count; ++i) {
         const int32_t s = large[static_cast<size_t>(i)];
         for (int32_t t = 0; t < n; ++t)
-            if (t != s && !(is_large[t] && t < s) && boxes_overlap(boxes[s], boxes[t]))
+            if (t != s && !(is_large[t] && t < s) && group(s) != group(t) && boxes_overlap(boxes[s], boxes[t]))
                 visit(std::min(s, t), std::max(s, t));
     }
+}
+
+// Calls visit(s, t), s < t, once for every two overlapping boxes; as above, each box a
+// group of its own.
+template <class Visit>
+void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit &&visit,
+                               int threads = loop_threads())
+{
+    for_each_overlapping_pair_across(boxes, [](int32_t t) { return t; }, cell, std::forward<Visit>(visit), threads);
 }
 
 // Calls visit(s, t), s < t, once for every two overlapping boxes of which one at least is
