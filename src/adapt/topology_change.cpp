@@ -167,7 +167,10 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
     }
     if (edges.size() < 2 || !(cell > 0))
         return {};
-    cell /= static_cast<double>(edges.size());
+    // Cells of twice the mean box: a box covers about 3 cells instead of 8, and with the
+    // pairs of one class passed over cheaply, the grid's entries are what costs (on vortex
+    // T = 2, 55k edges: 25 ms per call with cells of one box, 16 % less with two).
+    cell = 2 * cell / static_cast<double>(edges.size());
     std::vector<std::vector<MergeCandidate>> found(static_cast<size_t>(loop_threads()));
     const auto class_of = [&](int32_t s) { return normal_class[s]; };
     for_each_overlapping_pair_across(boxes, class_of, cell, [&](int32_t s, int32_t t) {
