@@ -40,8 +40,10 @@ struct Approach {
 // (within round-off) may slide along its plane of contact or open, not close; pairs that
 // already meet have no such plane and are not limited. The pairs are found by
 // their swept boxes over [0, dt] (swept_pairs.hpp); the result does not depend on the
-// number of threads.
-Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt);
+// number of threads. With `among`, only the pairs of which one triangle at least is in it
+// (distinct triangles) are looked at.
+Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt,
+                        const std::vector<int32_t> *among = nullptr);
 
 // The same, except that a pair nearer than contact_gap times its size (its longest edge)
 // that would limit the step is put into `contacts` (sorted by its triangles) instead of

@@ -56,11 +56,30 @@ Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity
     std::iota(parent.begin(), parent.end(), 0);
     std::vector<Approach> contacts;
     std::vector<int32_t> changed; // the triangles with a corner whose velocity changed
+    bool only_contacts_limit = false; // in the first round, only contacts would limit the step
     for (int round = 0; round < max_contact_rounds; ++round) {
         const Approach first =
             first_approach_with_contacts(mesh, velocity, dt, contact_gap_ratio, contacts, round ? &changed : nullptr);
-        if (contacts.empty())
-            return round == 0 ? first : first_approach(mesh, velocity, dt);
+        if (round == 0)
+            only_contacts_limit = !(first.time < dt);
+        if (contacts.empty()) {
+            if (round == 0)
+                return first;
+            if (!only_contacts_limit)
+                return first_approach(mesh, velocity, dt);
+            // No pair that kept its velocities limits the step: in the first round no pair
+            // but the contacts did, and a contact whose corners all kept their velocities
+            // moves as one. So only the pairs with a retimed corner are looked at again
+            // (on vortex T = 6 after t = 4.5 this was always so, and looking at every pair
+            // again took a third of the advection).
+            std::vector<int32_t> retimed;
+            for (int32_t f = 0; f < mesh.num_triangles(); ++f) {
+                const Triangle &t = mesh.tri[f];
+                if (velocity[t[0]] != own[t[0]] || velocity[t[1]] != own[t[1]] || velocity[t[2]] != own[t[2]])
+                    retimed.push_back(f);
+            }
+            return first_approach(mesh, velocity, dt, &retimed);
+        }
         for (const Approach &c : contacts) {
             const Triangle &p = mesh.tri[c.first], &q = mesh.tri[c.second];
             const int32_t root = zone_of(parent, p[0]);

@@ -9,6 +9,7 @@
 #include "mesh/parallel.hpp"
 #include "geometry/collision_time.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstddef>
@@ -162,13 +163,12 @@ void neighbours_and_meeting_pairs_do_not_limit(void **)
     assert_true(first_approach(crossing, w, 1).time == 1);
 }
 
-// A strip of triangles folded over itself in many layers, all closing: the same answer,
-// and the same pair, for one thread and for two.
-void the_answer_does_not_depend_on_threads(void **)
+// Triangles side by side in 40 layers, each moving at its own random speed: nearly all
+// closing on others.
+TriMesh closing_layers(std::vector<Vec3> &v)
 {
     TriMesh mesh;
     Numbers rng{11};
-    std::vector<Vec3> v;
     for (int layer = 0; layer < 40; ++layer)
         for (int k = 0; k < 30; ++k) {
             const int base = static_cast<int>(mesh.pos.size());
@@ -181,6 +181,14 @@ void the_answer_does_not_depend_on_threads(void **)
             for (int c = 0; c < 3; ++c)
                 v.push_back(speed + rng.point(0.05));
         }
+    return mesh;
+}
+
+// The same answer, and the same pair, for one thread and for two.
+void the_answer_does_not_depend_on_threads(void **)
+{
+    std::vector<Vec3> v;
+    const TriMesh mesh = closing_layers(v);
     Approach by[2];
     for (int threads = 1; threads <= 2; ++threads) {
         ThreadLimit limit(threads);
@@ -188,6 +196,53 @@ void the_answer_does_not_depend_on_threads(void **)
     }
     assert_true(by[0].time < 1);
     assert_true(by[0].time == by[1].time && by[0].first == by[1].first && by[0].second == by[1].second);
+}
+
+// With `among` (the contact rounds of motion/safe_motion), the first approach of the pairs
+// with a triangle among them: each such pair measured alone, the earliest, found only
+// among the triangles near them. Three layers in the middle; and a triangle far from all.
+void among_a_few_is_the_earliest_of_their_pairs(void **)
+{
+    std::vector<Vec3> v;
+    TriMesh mesh = closing_layers(v);
+    std::vector<int32_t> among;
+    for (int32_t t = 20 * 30; t < 23 * 30; t += 2)
+        among.push_back(t);
+    Approach expected;
+    expected.time = 1;
+    for (int32_t s = 0; s < mesh.num_triangles(); ++s)
+        for (int32_t t : among) {
+            if (s == t)
+                continue;
+            const int32_t a = std::min(s, t), b = std::max(s, t);
+            Vec3 x[6];
+            std::vector<Vec3> w(6);
+            for (int k = 0; k < 3; ++k) {
+                x[k] = mesh.pos[mesh.tri[a][k]];
+                x[3 + k] = mesh.pos[mesh.tri[b][k]];
+                w[k] = v[mesh.tri[a][k]];
+                w[3 + k] = v[mesh.tri[b][k]];
+            }
+            Approach pair = first_approach(two_triangles(x), w, 1);
+            pair.first = a;
+            pair.second = b;
+            if (pair.time < expected.time || (pair.time == expected.time && pair.time < 1 &&
+                                              std::make_pair(a, b) < std::make_pair(expected.first, expected.second)))
+                expected = pair;
+        }
+    const Approach found = first_approach(mesh, v, 1, &among);
+    assert_true(expected.time < 1);
+    assert_true(found.time == expected.time && found.first == expected.first && found.second == expected.second);
+
+    // A triangle far from the others: nothing limits it.
+    const int32_t far = static_cast<int32_t>(mesh.pos.size());
+    for (const Vec3 &corner : {Vec3(50, 0, 0), Vec3(50.1, 0, 0), Vec3(50, 0.1, 0)}) {
+        mesh.pos.push_back(corner);
+        v.push_back(Vec3(-1, 0, 0));
+    }
+    mesh.tri.push_back(Triangle{far, far + 1, far + 2});
+    const std::vector<int32_t> alone = {mesh.num_triangles() - 1};
+    assert_true(first_approach(mesh, v, 1, &alone).time == 1);
 }
 
 } // namespace
@@ -201,6 +256,7 @@ int main()
         cmocka_unit_test(touching_pairs_may_slide_or_open_but_not_close),
         cmocka_unit_test(neighbours_and_meeting_pairs_do_not_limit),
         cmocka_unit_test(the_answer_does_not_depend_on_threads),
+        cmocka_unit_test(among_a_few_is_the_earliest_of_their_pairs),
     };
     return cmocka_run_group_tests_name("unit_collision_time", tests, nullptr, nullptr);
 }
