@@ -309,12 +309,14 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
         const int32_t count = static_cast<int32_t>(near.size());
         std::vector<Box> boxes(near.size());
         std::vector<Reach> reach(near.size());
-        double extent = 0;
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
         for (int32_t k = 0; k < count; ++k) {
             boxes[k] = swept_in_frame(swept_of(near[k]), Vec3::Zero());
             reach[k] = reach_of_triangle(near[k]);
-            extent += (boxes[k][1] - boxes[k][0]).maxCoeff();
         }
+        double extent = 0;
+        for (const Box &box : boxes)
+            extent += (box[1] - box[0]).maxCoeff();
         std::vector<int32_t> some; // `among` by its place in `near` (a NaN box is in neither)
         for (int32_t t : *among)
             if (const auto at = std::lower_bound(near.begin(), near.end(), t); at != near.end() && *at == t)
