@@ -48,7 +48,9 @@ int32_t zone_of(std::vector<int32_t> &parent, int32_t v)
 // every round joins two zones at least, for a pair within one zone does not move relative
 // to itself). A pair none of whose corners changed velocity in the last round is what it
 // was, so a later round looks only at the triangles around the changed corners. Returns
-// the first approach of the rest, the contacts left after the last round among them.
+// the first approach of the rest, the contacts left after the last round among them: of
+// the pairs with a retimed corner alone where the first round found nothing but contacts
+// limiting the step.
 Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity, double dt)
 {
     const std::vector<Vec3> own = velocity;
