@@ -43,6 +43,18 @@ int32_t zone_of(std::vector<int32_t> &parent, int32_t v)
     return v;
 }
 
+// The triangles with a corner whose velocity differs between `a` and `b`: those a zone retimed.
+std::vector<int32_t> retimed_triangles(const TriMesh &mesh, const std::vector<Vec3> &a, const std::vector<Vec3> &b)
+{
+    std::vector<int32_t> retimed;
+    for (int32_t f = 0; f < mesh.num_triangles(); ++f) {
+        const Triangle &t = mesh.tri[f];
+        if (a[t[0]] != b[t[0]] || a[t[1]] != b[t[1]] || a[t[2]] != b[t[2]])
+            retimed.push_back(f);
+    }
+    return retimed;
+}
+
 // Joins the corners of every pair in contact over dt into zones, each moving with the mean
 // velocity of its corners, until no pair is in contact (at most max_contact_rounds rounds;
 // every round joins two zones at least, for a pair within one zone does not move relative
@@ -74,12 +86,7 @@ Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity
             // moves as one. So only the pairs with a retimed corner are looked at again
             // (on vortex T = 6 after t = 4.5 this was always so, and looking at every pair
             // again took a third of the advection).
-            std::vector<int32_t> retimed;
-            for (int32_t f = 0; f < mesh.num_triangles(); ++f) {
-                const Triangle &t = mesh.tri[f];
-                if (velocity[t[0]] != own[t[0]] || velocity[t[1]] != own[t[1]] || velocity[t[2]] != own[t[2]])
-                    retimed.push_back(f);
-            }
+            const std::vector<int32_t> retimed = retimed_triangles(mesh, velocity, own);
             return first_approach(mesh, velocity, dt, &retimed);
         }
         for (const Approach &c : contacts) {
@@ -121,12 +128,7 @@ Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity
 bool zones_made_a_crossing(const TriMesh &mesh, const std::vector<Vec3> &velocity, const std::vector<Vec3> &moving,
                            const std::vector<Vec3> &moved)
 {
-    std::vector<int32_t> zoned;
-    for (int32_t f = 0; f < mesh.num_triangles(); ++f) {
-        const Triangle &t = mesh.tri[f];
-        if (moving[t[0]] != velocity[t[0]] || moving[t[1]] != velocity[t[1]] || moving[t[2]] != velocity[t[2]])
-            zoned.push_back(f);
-    }
+    const std::vector<int32_t> zoned = retimed_triangles(mesh, moving, velocity);
     std::vector<Box> boxes(mesh.tri.size());
     double extent = 0;
     for (size_t f = 0; f < boxes.size(); ++f) {
