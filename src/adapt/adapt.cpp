@@ -77,23 +77,16 @@ private:
     // The crossing guard, or null when it is off.
     CrossingGuard *guard() { return settings_.crossing_guard ? &guard_ : nullptr; }
 
-    // Features are detected once, at the start; the geometry is analysed in full where
-    // every vertex has moved (at the start and after each sweep). After splitting,
-    // contraction and flipping only the vertices whose fans changed are analysed anew
-    // (tracked_analysis.hpp): the same result as a full analysis, for a fraction of its cost.
-    // Fixed vertices are carried as corners.
+    // Features are detected once, at the start, where the geometry is analysed in full.
+    // After every split, contraction, flip and sweep only the vertices whose fans changed
+    // are analysed anew (tracked_analysis.hpp): the same result as a full analysis, for a
+    // fraction of its cost (a sweep leaves the settled fans alone). Fixed vertices are
+    // carried as corners.
     const Features &detected_features()
     {
         timed(seconds_.analysis, [&] { analyze_surface(mesh_, settings_.features, settings_.metric, geometry_); });
         constraints_.impose_on(geometry_.features.rank);
         return geometry_.features;
-    }
-    void analyse_all()
-    {
-        PhaseClock clock(seconds_.analysis);
-        analyze_geometry(mesh_, settings_.metric, geometry_);
-        geometry_.features = features_.as_features(mesh_);
-        tracked_.mark_current();
     }
     void analyse_changed()
     {
@@ -126,7 +119,7 @@ private:
 int32_t Adaptation::pass(AdaptCounts &counts)
 {
     if (++counts.passes > 1)
-        analyse_all(); // the last pass's sweeps moved every vertex
+        analyse_changed(); // the last pass's sweeps
     const PassContext context{edit_, features_, guard(), constraints_, size_};
     // Repair first (§4): the density the desired edge length asks for, and no extreme
     // angles; then optimization (§3) of the repaired mesh.
@@ -142,7 +135,7 @@ int32_t Adaptation::pass(AdaptCounts &counts)
     analyse_changed();
     for (int sweep = 0; sweep < settings_.smoothing_sweeps; ++sweep) {
         if (sweep > 0)
-            analyse_all();
+            analyse_changed();
         PhaseClock clock(seconds_.smoothing);
         std::vector<Vec3> moved = smoothing_sweep(mesh_, geometry_, settings_.denoise, guard());
         edit_.move(moved);

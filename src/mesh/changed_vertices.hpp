@@ -21,8 +21,9 @@ public:
     void split(const TriMesh &, const SplitChange &change) override;
     void collapse(const TriMesh &, const CollapseChange &change) override { mark(change.fans); }
     void flip(const TriMesh &, const FlipChange &change) override { mark(change.fans); }
-    // A sweep moves nearly every vertex: every fan counts as changed.
-    void move(const TriMesh &, const MoveChange &) override { marks_.assign(marks_.size(), 1); }
+    // A sweep leaves most fans of a settled mesh alone (smooth.cpp: settled_imbalance):
+    // a fan changed if its vertex or one of its neighbours moved.
+    void move(const TriMesh &mesh, const MoveChange &change) override;
     void renumber(const Renumbering &renumbering) override { renumbering.apply_to_vertices(marks_); }
 
 private:
@@ -33,6 +34,16 @@ private:
     }
     std::vector<char> marks_;
 };
+
+inline void ChangedVertices::move(const TriMesh &mesh, const MoveChange &change)
+{
+    // Heard before the move: mesh.pos still holds the old positions.
+    for (int32_t v = 0; v < mesh.num_vertices(); ++v)
+        if (change.positions[v] != mesh.pos[v]) {
+            marks_[v] = 1;
+            mesh.for_each_neighbour(v, [&](int32_t w, int32_t) { marks_[w] = 1; });
+        }
+}
 
 inline void ChangedVertices::split(const TriMesh &, const SplitChange &change)
 {
