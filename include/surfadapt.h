@@ -139,6 +139,9 @@ enum sfa_param {
     /** r: "relative shortness" contraction ratio (§4.2). Two feature vertices (corners or
         ridge vertices) nearer than r l count as one feature: their edge may be contracted
         although that joins two corners or ridge curves (a cusp squeezed by the flow).
+        Where both are near a facing sheet (the two sides of a sheet thinner than an edge),
+        so do two nearer than 2 r l across a needle (an angle below ::SFA_PARAM_SMALL_ANGLE
+        opposite their edge): the cusps at the rim of such a sheet.
         A ratio, in (0, 1); default 0.1. */
     SFA_PARAM_CONTRACT_SHORT_RATIO = 9,
     /** R: "relative small triangle" contraction ratio (§4.2). A ratio, in (0, 1);

@@ -43,11 +43,49 @@ MetricLengths metric_lengths(const TriMesh &mesh, const SurfaceAnalysis &analysi
     return out;
 }
 
-// `coarsens`: absolute shortness may apply (shortness_applies).
+// Two feature vertices that a contraction of their edge would make one, joining two
+// corners or two ridge curves (or a curve and a corner): two corners, or two feature
+// vertices whose edge is no ridge edge.
+bool joins_features(const TriMesh &mesh, int32_t h, const CarriedFeatures &features)
+{
+    const int8_t ra = features.rank(mesh.tail(h)), rb = features.rank(mesh.head(h));
+    return ra > 0 && rb > 0 && ((ra == 2 && rb == 2) || !features.is_ridge(h));
+}
+
+// A cusp the flow squeezed: h's edge joins two feature vertices (joins_features) that are
+// both near a facing sheet (CrossingGuard::near_sheet), as at the rim of a sheet thinner
+// than an edge, where the detected features are the cusps of the unresolved rim rather
+// than the surface's own.
+bool at_cusp(const TriMesh &mesh, int32_t h, const CarriedFeatures &features, const CrossingGuard *guard)
+{
+    return guard && guard->near_sheet(mesh.tail(h)) && guard->near_sheet(mesh.head(h)) &&
+           joins_features(mesh, h, features);
+}
+
+// The edge of a needle at a cusp (at_cusp): shorter than 2 r l, opposite an angle below
+// theta_s. Its two ends count as one feature, as two feature vertices nearer than r l do
+// anywhere (merged_position). In the vortex flow of T = 6 the sweeps slide a ridge vertex
+// along its ridge towards a corner 0.12 to 0.18 l away across such an edge, which §4.2's
+// relative shortness (r times the longest edge around, about 1.2 l there) does not reach:
+// 1 to 7 triangles of 2.9 to 4.8 degrees at each checkpoint from t = 3, each where the
+// sheets came nearest, and the largest backtrace error at its vertex.
+bool needle_at_cusp(const EdgeNeighbourhood &n, const RepairSettings &s)
+{
+    if (!(n.length < 2 * s.contract_short_ratio * s.desired_length))
+        return false;
+    for (int k = 0; k < n.triangles; ++k)
+        if (n.opposite_cos[k] > s.cos_small_angle)
+            return true;
+    return false;
+}
+
+// `coarsens`: absolute shortness may apply (shortness_applies); `cusp`: at_cusp.
 bool wants_contraction(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h, const RepairSettings &s,
-                       bool coarsens)
+                       bool coarsens, bool cusp)
 {
     const EdgeNeighbourhood n = edge_neighbourhood(mesh, h);
+    if (cusp && needle_at_cusp(n, s))
+        return true;
     for (int k = 0; k < n.triangles; ++k)
         if (n.opposite_cos[k] > s.cos_small_angle && n.triangle_longest[k] < s.desired_length)
             return true; // absolute small angle
@@ -270,9 +308,10 @@ bool merge_crosses(const TriMesh &mesh, int32_t h, const Vec3 &merged, const Cro
 // new vertex, split.cpp), or where they cannot be fitted, the quadric error minimum of
 // the faces around the edge along their normal.
 //
-// Two feature vertices nearer than `one_feature` (r l: an edge so short that §4.2 calls it
-// relatively short next to any edge of length l) are one feature: they merge (at the one
-// of higher rank, or halfway) although that joins two corners or two ridge curves. Detected
+// Two feature vertices nearer than r l (an edge so short that §4.2 calls it relatively
+// short next to any edge of length l), or the ends of a needle at a cusp (`cusp`: at_cusp;
+// needle_at_cusp), are one feature: they merge (at the one of higher rank, or halfway)
+// although that joins two corners or two ridge curves (joins_features). Detected
 // features of an evolving surface include the cusps at the rims of sheets thinner than an
 // edge, where the flow squeezes such vertices together: kept apart, they left needles of
 // 0.1 degrees in the vortex flow of T = 6.
@@ -280,13 +319,15 @@ bool merge_crosses(const TriMesh &mesh, int32_t h, const Vec3 &merged, const Cro
 // A fixed vertex (constraints.hpp) is a corner that stays where it is: the pass keeps it
 // (h's head) and never contracts two.
 bool merged_position(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h, const CarriedFeatures &features,
-                     const CarriedConstraints &constraints, double one_feature, Vec3 &merged)
+                     const CarriedConstraints &constraints, const RepairSettings &settings, bool cusp, Vec3 &merged)
 {
     const int32_t a = mesh.tail(h), b = mesh.head(h);
     const int8_t ra = features.rank(a), rb = features.rank(b);
-    if (ra > 0 && rb > 0 && ((ra == 2 && rb == 2) || !features.is_ridge(h))) {
-        // Otherwise a corner would disappear, or two ridge curves (or a curve and a corner) would merge.
-        if (!((mesh.pos[b] - mesh.pos[a]).norm() < one_feature))
+    if (joins_features(mesh, h, features)) {
+        const bool one_feature =
+            (mesh.pos[b] - mesh.pos[a]).norm() < settings.contract_short_ratio * settings.desired_length ||
+            (cusp && needle_at_cusp(edge_neighbourhood(mesh, h), settings));
+        if (!one_feature)
             return false;
         merged = constraints.fixed(b) || ra != rb ? mesh.pos[ra > rb ? a : b] : Vec3((mesh.pos[a] + mesh.pos[b]) / 2);
         return true;
@@ -314,15 +355,15 @@ bool merged_position(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32
 }
 
 // Every check of contracting h but the crossing guard's; the merged vertex's position if
-// it passes. `coarsens`: shortness_applies. `nearby`: scratch for stays_clear_of_neighbours.
+// it passes. `coarsens`: shortness_applies; `cusp`: at_cusp. `nearby`: scratch for
+// stays_clear_of_neighbours.
 bool contraction_allowed(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_t h,
                          const RepairSettings &settings, const CarriedFeatures &features,
-                         const CarriedConstraints &constraints, bool coarsens, const HubFans &hubs,
+                         const CarriedConstraints &constraints, bool coarsens, bool cusp, const HubFans &hubs,
                          std::vector<int32_t> &nearby, FanSectors &merged_fan, int64_t &tests, Vec3 &merged)
 {
-    return wants_contraction(mesh, analysis, h, settings, coarsens) && collapse_keeps_manifold(mesh, h) &&
-           merged_position(mesh, analysis, h, features, constraints,
-                           settings.contract_short_ratio * settings.desired_length, merged) &&
+    return wants_contraction(mesh, analysis, h, settings, coarsens, cusp) && collapse_keeps_manifold(mesh, h) &&
+           merged_position(mesh, analysis, h, features, constraints, settings, cusp, merged) &&
            faces_survive(mesh, analysis, features, h, merged) &&
            stays_clear_of_neighbours(mesh, h, merged, hubs, nearby, merged_fan, tests);
 }
@@ -406,7 +447,7 @@ public:
         if (constraints_.fixed(mesh_.tail(h)) && constraints_.fixed(mesh_.head(h)))
             return false; // neither may go (a required edge's ends are both fixed)
         if (!wants_contraction(mesh_, analysis_, h, repair_.at_edge(mesh_, h),
-                               shortness_applies(mesh_, h, features_, guard_)))
+                               shortness_applies(mesh_, h, features_, guard_), at_cusp(mesh_, h, features_, guard_)))
             return false;
         order = (mesh_.pos[mesh_.head(h)] - mesh_.pos[mesh_.tail(h)]).norm(); // shortest first (§4.2)
         return true;
@@ -423,7 +464,8 @@ public:
     bool plan(int32_t h, Plan &plan) const
     {
         return contraction_allowed(mesh_, analysis_, h, repair_.at_edge(mesh_, h), features_, constraints_,
-                                   shortness_applies(mesh_, h, features_, guard_), hubs_, nearby_[thread_index()],
+                                   shortness_applies(mesh_, h, features_, guard_),
+                                   at_cusp(mesh_, h, features_, guard_), hubs_, nearby_[thread_index()],
                                    merged_fans_[thread_index()], tests_[thread_index()], plan.merged);
     }
     // Each contraction marks the merged vertex and its neighbours.

@@ -99,8 +99,8 @@ std::vector<char> near_facing_sheet(const TriMesh &mesh)
 void CrossingGuard::watch_features(const std::vector<int8_t> &rank)
 {
     for (size_t v = 0; v < watched_.size(); ++v)
-        if (rank[v] > 0)
-            watched_[v] = 1;
+        if (rank[v] > 0 && watched_[v] == 0)
+            watched_[v] = feature_mark;
 }
 
 void CrossingGuard::renumber(const std::vector<int32_t> &vertex_map)

@@ -32,9 +32,17 @@ public:
     explicit CrossingGuard(std::vector<char> watched) : watched_(std::move(watched)) {}
 
     bool watches(int32_t v) const { return watched_[v] != 0; }
+    // Watched for a facing sheet nearer than its edges (near_facing_sheet), not only as a
+    // feature (watch_features).
+    bool near_sheet(int32_t v) const { return watched_[v] == sheet_mark; }
     const std::vector<char> &watched() const { return watched_; }
     bool watches_any(const Triangle &t) const { return watches(t[0]) || watches(t[1]) || watches(t[2]); }
-    void add_vertex(bool watched) { watched_.push_back(watched); }
+    // A new vertex on the edge between a and b: near a sheet if either is, else watched as
+    // a feature if either is watched.
+    void add_vertex_between(int32_t a, int32_t b)
+    {
+        watched_.push_back(near_sheet(a) || near_sheet(b) ? sheet_mark : watches(a) || watches(b) ? feature_mark : 0);
+    }
     // Also watches every ridge and corner vertex (rank > 0). There the surface bends so
     // sharply that two faces a hop apart, sharing no vertex, meet at an angle, and moving a
     // ridge vertex along its ridge can carry one through the other; the fold checks, made
@@ -73,7 +81,10 @@ private:
         int32_t face;
     };
 
-    std::vector<char> watched_;
+    // A vertex near a facing sheet (near_facing_sheet's mark), and one watched only as a
+    // feature.
+    static constexpr char sheet_mark = 1, feature_mark = 2;
+    std::vector<char> watched_; // 0, sheet_mark or feature_mark
     std::vector<int32_t> faces_;
     std::vector<std::array<Vec3, 2>> boxes_; // of faces_, while they are indexed
     // The faces indexed together, sorted bucket by bucket: a query reads one contiguous run

@@ -17,7 +17,7 @@ public:
     void split(const TriMesh &mesh, const SplitChange &change) override
     {
         const SplitRecord &r = change.record;
-        guard_.add_vertex(guard_.watches(r.a) || guard_.watches(r.b));
+        guard_.add_vertex_between(r.a, r.b);
         refresh_fan(mesh, r.vertex);
     }
     void collapse(const TriMesh &mesh, const CollapseChange &change) override { refresh_fan(mesh, change.record.keep); }

@@ -104,12 +104,29 @@ void a_face_moved_through_the_other_side_of_a_sheet_crosses_it(void **)
 void watched_vertices_follow_the_numbering(void **)
 {
     CrossingGuard guard(std::vector<char>{0, 1, 0, 1});
-    guard.add_vertex(true);
+    guard.add_vertex_between(0, 3); // 4
     guard.renumber({-1, 2, 0, -1, 1}); // 1 -> 2, 2 -> 0, 4 -> 1; 0 and 3 gone
     assert_int_equal(guard.watched().size(), 3);
     assert_false(guard.watches(0));
     assert_true(guard.watches(1));
     assert_true(guard.watches(2));
+}
+
+// A feature is watched, but is no vertex near a facing sheet; a new vertex is near a sheet
+// where an end of its edge is, else watched where an end is.
+void features_are_watched_but_not_near_a_sheet(void **)
+{
+    CrossingGuard guard(std::vector<char>{0, 1, 0, 0});
+    guard.watch_features({1, 1, 0, 0});
+    assert_true(guard.watches(0) && !guard.near_sheet(0));
+    assert_true(guard.watches(1) && guard.near_sheet(1));
+    assert_false(guard.watches(2));
+    guard.add_vertex_between(0, 1); // 4
+    guard.add_vertex_between(0, 2); // 5
+    guard.add_vertex_between(2, 3); // 6
+    assert_true(guard.near_sheet(4));
+    assert_true(guard.watches(5) && !guard.near_sheet(5));
+    assert_false(guard.watches(6));
 }
 
 constexpr double pi = 3.14159265358979323846;
@@ -181,6 +198,7 @@ int main(void)
         cmocka_unit_test(a_sheet_thinner_than_an_edge_is_watched_a_thick_body_is_not),
         cmocka_unit_test(a_face_moved_through_the_other_side_of_a_sheet_crosses_it),
         cmocka_unit_test(watched_vertices_follow_the_numbering),
+        cmocka_unit_test(features_are_watched_but_not_near_a_sheet),
         cmocka_unit_test(remeshing_never_carries_a_thin_filament_through_itself),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
