@@ -20,8 +20,6 @@ public:
     // The geometry of the vertices marked since the last call analysed anew; features are
     // left as they are.
     void update(const TriMesh &mesh, const MetricBounds &bounds);
-    // After a full analysis of the mesh as it is: no vertex is out of date.
-    void mark_current() { changed_.clear(); }
 
     void split(const TriMesh &mesh, const SplitChange &change) override { changed_.split(mesh, change); }
     void collapse(const TriMesh &mesh, const CollapseChange &change) override { changed_.collapse(mesh, change); }
