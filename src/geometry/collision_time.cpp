@@ -118,17 +118,19 @@ Approach pair_approach(const PairMotion &m, double limit)
         edge_a[k] = m.x[(k + 1) % 3] - m.x[k];
         edge_b[k] = m.x[3 + (k + 1) % 3] - m.x[3 + k];
     }
-    // The face normals first: for two sheets facing each other they are the best planes.
+    // The plane square to the line of centres first: it separates nearly every pair that
+    // the balls leave, whether side by side in one sheet or facing across two (on the first
+    // 60 steps of collision-safe Enright, all but 1.3 % of them; the face normals first
+    // needed 2.7 planes a pair). Then the face normals, and the planes through an edge
+    // square to its face, which separate the two where they are nearly coplanar.
+    consider(m.x[3] + m.x[4] + m.x[5] - m.x[0] - m.x[1] - m.x[2]);
     const Vec3 normal_a = edge_a[0].cross(edge_a[1]), normal_b = edge_b[0].cross(edge_b[1]);
     consider(normal_a);
     consider(normal_b);
-    // Side by side in one sheet, nearly coplanar, the two are apart across the sheet: the
-    // planes through an edge square to its face, and the one through the line of centres.
     for (int k = 0; k < 3; ++k) {
         consider(normal_a.cross(edge_a[k]));
         consider(normal_b.cross(edge_b[k]));
     }
-    consider(m.x[3] + m.x[4] + m.x[5] - m.x[0] - m.x[1] - m.x[2]);
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
             consider(edge_a[i].cross(edge_b[j]));
@@ -211,11 +213,11 @@ Reach reach_of(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &va, cons
 // of centres and radii, which are as exact as the coordinates are far from the origin.
 bool out_of_reach(const Reach &s, const Reach &t, double dt)
 {
-    const double gap = (s.centre - t.centre).norm() - s.radius - t.radius;
     const double reach = dt * ((s.velocity - t.velocity).norm() + s.spread + t.spread);
     const double rounding =
         1e-14 * (s.centre.cwiseAbs().maxCoeff() + t.centre.cwiseAbs().maxCoeff() + s.radius + t.radius);
-    return gap > (1 + 1e-6) * reach + rounding;
+    const double clear = s.radius + t.radius + (1 + 1e-6) * reach + rounding; // the centres' distance needed
+    return (s.centre - t.centre).squaredNorm() > clear * clear;
 }
 
 bool earlier(const Approach &a, const Approach &b)
@@ -265,15 +267,26 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
             m.x[3 + k] = mesh.pos[q[k]];
             m.v[3 + k] = velocity[q[k]];
         }
-        double size = 0;
-        for (int k = 0; k < 3; ++k)
-            size = std::max({size, (m.x[(k + 1) % 3] - m.x[k]).norm(), (m.x[3 + (k + 1) % 3] - m.x[3 + k]).norm()});
-        // A pair nearer than contact_gap of its size may be a contact: it is sought over the
-        // whole step. Any other only matters if it comes before the first approach yet. The
-        // balls' gap is a lower bound of the distance, and rules most pairs out cheaply.
-        const double touch = contact_gap * size;
-        const double balls_gap = (reach_s.centre - reach_t.centre).norm() - reach_s.radius - reach_t.radius;
-        const bool near = contacts && balls_gap < touch && triangle_distance(m.x, m.x + 3) < touch;
+        const auto longest_edge = [&] {
+            double size = 0;
+            for (int k = 0; k < 3; ++k)
+                size = std::max({size, (m.x[(k + 1) % 3] - m.x[k]).norm(), (m.x[3 + (k + 1) % 3] - m.x[3 + k]).norm()});
+            return size;
+        };
+        // A pair nearer than contact_gap of its size (its longest edge) may be a contact: it
+        // is sought over the whole step. Any other only matters if it comes before the first
+        // approach yet. The balls' gap is a lower bound of the distance, and rules most pairs
+        // out cheaply; no edge is longer than a ball's diameter.
+        double size = -1; // not measured yet
+        bool near = false;
+        if (contacts) {
+            const double balls_gap = (reach_s.centre - reach_t.centre).norm() - reach_s.radius - reach_t.radius;
+            if (balls_gap < contact_gap * 2.000001 * std::max(reach_s.radius, reach_t.radius)) {
+                size = longest_edge();
+                const double touch = contact_gap * size;
+                near = balls_gap < touch && triangle_distance(m.x, m.x + 3) < touch;
+            }
+        }
         const double limit = near ? dt : mine.time;
         Approach pair = pair_approach(m, limit);
         if (pair.time == 0)
@@ -282,11 +295,13 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
             pair.time = std::max(pair.time, additive_time(m, limit));
         pair.first = s;
         pair.second = t;
-        pair.size = size;
-        if (near && pair.time < dt)
+        if (near && pair.time < dt) {
+            pair.size = size;
             touching[static_cast<size_t>(thread)].push_back(pair);
-        else if (earlier(pair, mine))
+        } else if (earlier(pair, mine)) {
+            pair.size = size < 0 ? longest_edge() : size;
             mine = pair;
+        }
     };
     if (among) {
         // Few (the later rounds of contact: a few dozen triangles of a mesh of 100k). Only
@@ -326,8 +341,8 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
                 look_at(near[s], near[t], reach[s], reach[t], thread_index());
             });
     } else {
-        std::vector<SweptTriangle> swept(static_cast<size_t>(n));
-        std::vector<Reach> reach(static_cast<size_t>(n));
+        FillBuffer<SweptTriangle> swept(static_cast<size_t>(n));
+        FillBuffer<Reach> reach(static_cast<size_t>(n));
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
         for (int32_t t = 0; t < n; ++t) {
             swept[t] = swept_of(t);

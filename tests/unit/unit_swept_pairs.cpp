@@ -7,6 +7,7 @@
 #include "geometry/swept_pairs.hpp"
 #include "geometry/triangle_intersection.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstddef>
@@ -219,6 +220,38 @@ void keys_are_numbered_in_order_of_first_coming(void **)
             fail_msg("key %zu numbered %d, not %zu", i, number[i], i % 5000);
 }
 
+// The sweep's order: sort_spread_keys orders (key, index) pairs as std::sort does, ties by
+// index, for keys spread evenly, keys with many ties, keys crowded into one bucket (which
+// std::sort takes over), keys all one, and keys whose range overflows.
+void spread_keys_sort_as_std_sort_does(void **)
+{
+    Numbers rng{20261203};
+    const auto check = [](const char *what, const std::vector<double> &keys) {
+        std::vector<std::pair<double, int32_t>> items, scratch;
+        for (size_t i = 0; i < keys.size(); ++i)
+            items.push_back({keys[i], static_cast<int32_t>(i)});
+        std::vector<std::pair<double, int32_t>> expected = items;
+        std::sort(expected.begin(), expected.end());
+        std::vector<size_t> buckets;
+        detail::sort_spread_keys(items, scratch, buckets);
+        if (items != expected)
+            fail_msg("%s: %zu keys not in std::sort's order", what, keys.size());
+    };
+    std::vector<double> even, ties, crowded, huge;
+    for (int i = 0; i < 1000; ++i) {
+        even.push_back(rng.uniform(-3, 5));
+        ties.push_back(std::floor(rng.uniform(0, 400))); // about 2.5 a value
+        crowded.push_back(i % 10 == 0 ? rng.uniform(0, 1e6) : rng.uniform(0, 1));
+        huge.push_back(i % 2 ? rng.uniform(1e307, 1.7e308) : -rng.uniform(1e307, 1.7e308));
+    }
+    check("evenly spread", even);
+    check("with ties", ties);
+    check("crowded", crowded);
+    check("all one", std::vector<double>(100, 0.25));
+    check("overflowing range", huge);
+    check("two", {1.0, -1.0});
+}
+
 } // namespace
 
 int main()
@@ -228,6 +261,7 @@ int main()
         cmocka_unit_test(a_surface_moving_as_one_visits_its_neighbours_only),
         cmocka_unit_test(neighbours_are_not_visited),
         cmocka_unit_test(keys_are_numbered_in_order_of_first_coming),
+        cmocka_unit_test(spread_keys_sort_as_std_sort_does),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
