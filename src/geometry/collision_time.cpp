@@ -96,12 +96,15 @@ double time_across(const PairMotion &m, const Vec3 &n, double &gap, double &clos
     return time;
 }
 
+// The line from the first triangle's centroid to the second's, three times as long.
+Vec3 line_of_centres(const PairMotion &m) { return m.x[3] + m.x[4] + m.x[5] - m.x[0] - m.x[1] - m.x[2]; }
+
 // A lower bound of the distance between the pair's triangles at the start: the gap between
 // their projections on the line of centres (negative where they overlap), less a margin
 // for its rounding, so that it never exceeds the distance triangle_distance measures.
 double gap_along_centres(const PairMotion &m)
 {
-    const Vec3 n = m.x[3] + m.x[4] + m.x[5] - m.x[0] - m.x[1] - m.x[2];
+    const Vec3 n = line_of_centres(m);
     const double length = n.norm();
     if (!(length > 0))
         return -std::numeric_limits<double>::infinity();
@@ -140,7 +143,7 @@ Approach pair_approach(const PairMotion &m, double limit)
     // 60 steps of collision-safe Enright, all but 1.3 % of them; the face normals first
     // needed 2.7 planes a pair). Then the face normals, and the planes through an edge
     // square to its face, which separate the two where they are nearly coplanar.
-    consider(m.x[3] + m.x[4] + m.x[5] - m.x[0] - m.x[1] - m.x[2]);
+    consider(line_of_centres(m));
     const Vec3 normal_a = edge_a[0].cross(edge_a[1]), normal_b = edge_b[0].cross(edge_b[1]);
     consider(normal_a);
     consider(normal_b);
@@ -299,6 +302,7 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
         bool near = false;
         if (contacts) {
             const double balls_gap = (reach_s.centre - reach_t.centre).norm() - reach_s.radius - reach_t.radius;
+            // The larger diameter, with room for the radii's rounding.
             if (balls_gap < contact_gap * 2.000001 * std::max(reach_s.radius, reach_t.radius)) {
                 size = longest_edge();
                 const double touch = contact_gap * size;

@@ -130,9 +130,8 @@ inline int32_t number_by_key(const std::vector<uint64_t> &key, std::vector<int32
 // the next one's), then insertion-sorted, which moves each key within its bucket only. A
 // comparison sort mispredicts about half of its branches (on bench_collision's sphere,
 // std::sort made a quarter of the search's mispredictions, and the search takes about 4 %
-// less time without it). Keys that crowd into a few buckets
-// (more than max_bucket in one) are left to std::sort instead, so that the cost stays
-// O(n log n).
+// less time without it). Keys that crowd into a few buckets (more than max_bucket in one)
+// are left to std::sort instead, so that the cost stays O(n log n).
 inline void sort_spread_keys(std::vector<std::pair<double, int32_t>> &items,
                              std::vector<std::pair<double, int32_t>> &scratch, std::vector<size_t> &bucket_start)
 {
