@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // A std::vector for a buffer that a loop fills right after it is made: its elements are
 // default-initialized rather than value-initialized. A value-initialized aggregate (a
-// struct of Eigen vectors, std::array<Vec3, 2>) is zeroed first, element by element; for
-// the per-triangle buffers of collision-safe motion's search that was about 250 bytes
-// a triangle every step, 7 % of the search's instructions (bench_collision).
+// struct of Eigen vectors, std::array<Vec3, 2>) is zeroed first; for the per-triangle
+// buffers of collision-safe motion's search that was about 180 bytes a triangle every
+// step, some 5 % of bench_collision's instructions.
 #pragma once
 
 #include <memory>
