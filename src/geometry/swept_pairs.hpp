@@ -144,8 +144,10 @@ inline void sort_spread_keys(std::vector<std::pair<double, int32_t>> &items,
         least = std::min(least, item.first);
         largest = std::max(largest, item.first);
     }
-    const double scale = static_cast<double>(n) / (largest - least); // inf or NaN if the keys are all one
-    if (!(scale < std::numeric_limits<double>::infinity()) || !std::isfinite(largest - least)) {
+    // Buckets per unit of key; none where the keys are all one, or their range or its
+    // reciprocal overflows.
+    const double range = largest - least, scale = static_cast<double>(n) / range;
+    if (!(range > 0 && std::isfinite(range) && std::isfinite(scale))) {
         std::sort(items.begin(), items.end());
         return;
     }
