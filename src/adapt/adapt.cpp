@@ -178,10 +178,8 @@ AdaptCounts adapt_surface(TriMesh &mesh, SurfaceData &data, const AdaptSettings 
     std::vector<int32_t> origin_hints = OriginHints(mesh).hints();
     if (settings.topology_change) {
         PhaseClock clock(counts.seconds.repair);
-        counts.topology = change_topology(mesh, data, settings.merge_distance, settings.repair.desired_length,
-                                          origin_hints);
-        if (counts.topology.merges + counts.topology.pinches + counts.topology.removals > 0)
-            components = connected_components(mesh);
+        counts.topology = change_topology(mesh, data, components, settings.merge_distance,
+                                          settings.repair.desired_length, origin_hints);
     }
     const SizeAsField size(mesh, data, settings.size_gradation);
     Adaptation adaptation(mesh, data, size.values(), settings, workspace, components, std::move(origin_hints),

@@ -2,6 +2,7 @@
 #include "adapt/topology_change.hpp"
 
 #include "geometry/box_pairs.hpp"
+#include "geometry/direction_classes.hpp"
 #include "geometry/distance.hpp"
 #include "geometry/triangle_intersection.hpp"
 #include "mesh/components.hpp"
@@ -9,6 +10,7 @@
 #include "mesh/surgery.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <tuple>
@@ -90,7 +92,7 @@ public:
 
     void merge_facing_sheets();
     void pinch_thin_necks();
-    void remove_tiny_drops();
+    void remove_tiny_drops(const Components &components);
     // Undoes every event that made or moved a triangle meeting one it shares no corner with.
     void undo_crossing_events();
     // The mesh, the host's data and the hints as the live events left them; the counts.
@@ -134,50 +136,70 @@ private:
 
 std::vector<MergeCandidate> Surgery::merge_candidates() const
 {
-    // Every interior edge once, by its half-edge h > twin; its box grown by d / 2 all
-    // round, so that two edges closer than d have overlapping boxes.
-    std::vector<int32_t> edges;
-    std::vector<Box> boxes;
-    std::vector<Vec3> normals; // each edge's, once
-    // Most overlapping pairs are two edges of one sheet, whose normals cannot face: each
-    // edge's normal is classed by its largest component's axis and sign, and two of one
-    // class are never compared (their dot product is at least 1/3 - 2/3 > facing_cosine).
-    static_assert(facing_cosine < -1.0 / 3);
-    std::vector<int8_t> normal_class;
+    // Most overlapping pairs are two edges of one sheet, whose normals cannot face. The
+    // edges are numbered class by class of their normals, so that the grid passes over the
+    // pairs of classes that cannot face unseen (box_pairs.hpp).
+    static const DirectionClasses classes(facing_cosine);
     const int32_t faces = mesh_.num_triangles();
     std::vector<Vec3> face_normals(static_cast<size_t>(faces));
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t f = 0; f < faces; ++f)
         if (is_live(mesh_.tri[f]))
             face_normals[f] = unit_normal(pos_, mesh_.tri[f]);
+    // Every interior edge once, by its half-edge h > twin, with the class of its normal,
+    // the mean of its triangles'.
+    const auto normal_of = [&](int32_t h) {
+        return (face_normals[TriMesh::face(h)] + face_normals[TriMesh::face(mesh_.opp[h])]).normalized();
+    };
+    std::vector<int32_t> by_half_edge;
+    std::vector<int16_t> class_by_half_edge;
+    by_half_edge.reserve(mesh_.opp.size() / 2);
+    class_by_half_edge.reserve(mesh_.opp.size() / 2);
+    std::vector<int32_t> first_of_class(DirectionClasses::count + 1, 0);
     double cell = 0;
     for (int32_t h = 0; h < static_cast<int32_t>(mesh_.opp.size()); ++h) {
         if (mesh_.opp[h] < 0 || mesh_.opp[h] > h)
             continue;
         const int32_t a = mesh_.tail(h), b = mesh_.head(h);
-        const Vec3 grow = Vec3::Constant(0.5 * merge_distance(a, b));
-        edges.push_back(h);
-        // The edge's normal: the mean of its triangles'.
-        normals.push_back((face_normals[TriMesh::face(h)] + face_normals[TriMesh::face(mesh_.opp[h])]).normalized());
-        int axis = 0;
-        normals.back().cwiseAbs().maxCoeff(&axis);
-        normal_class.push_back(static_cast<int8_t>(2 * axis + (normals.back()[axis] < 0)));
-        boxes.push_back({pos_[a].cwiseMin(pos_[b]) - grow, pos_[a].cwiseMax(pos_[b]) + grow});
-        cell += (pos_[b] - pos_[a]).norm() + 2 * grow[0];
+        const int c = classes.of(normal_of(h));
+        by_half_edge.push_back(h);
+        class_by_half_edge.push_back(static_cast<int16_t>(c));
+        ++first_of_class[static_cast<size_t>(c) + 1];
+        cell += (pos_[b] - pos_[a]).norm() + merge_distance(a, b);
     }
-    if (edges.size() < 2 || !(cell > 0))
+    const size_t count = by_half_edge.size();
+    if (count < 2 || !(cell > 0))
         return {};
+    // Numbered by class (a counting sort), each edge's box grown by d / 2 all round, so
+    // that two edges closer than d have overlapping boxes.
+    for (int c = 0; c < DirectionClasses::count; ++c)
+        first_of_class[static_cast<size_t>(c) + 1] += first_of_class[static_cast<size_t>(c)];
+    std::vector<int32_t> edges(count);
+    std::vector<int16_t> normal_class(count);
+    std::vector<Box> boxes(count);
+    for (size_t e = 0; e < count; ++e) {
+        const int32_t h = by_half_edge[e], a = mesh_.tail(h), b = mesh_.head(h);
+        const size_t k = static_cast<size_t>(first_of_class[static_cast<size_t>(class_by_half_edge[e])]++);
+        const Vec3 grow = Vec3::Constant(0.5 * merge_distance(a, b));
+        edges[k] = h;
+        normal_class[k] = class_by_half_edge[e];
+        boxes[k] = {pos_[a].cwiseMin(pos_[b]) - grow, pos_[a].cwiseMax(pos_[b]) + grow};
+    }
     // Cells of twice the mean box: a box covers about 3 cells instead of 8, and with the
-    // pairs of one class passed over cheaply, the grid's entries are what costs (on vortex
-    // T = 2, 55k edges: 25 ms per call with cells of one box, 16 % less with two).
-    cell = 2 * cell / static_cast<double>(edges.size());
+    // pairs of classes that cannot face passed over whole, the grid's entries are what
+    // costs (bench_topology's sphere: 92-97 ms a call with cells of two boxes, 115-131 with
+    // one, 90-93 with three, 115-127 with six).
+    cell = 2 * cell / static_cast<double>(count);
     std::vector<std::vector<MergeCandidate>> found(static_cast<size_t>(loop_threads()));
     const auto class_of = [&](int32_t s) { return normal_class[s]; };
-    for_each_overlapping_pair_across(boxes, class_of, cell, [&](int32_t s, int32_t t) {
-        const Vec3 &n1 = normals[s], &n2 = normals[t];
+    const auto may_face = [&](int a, int b) { return classes.may_pair(a, b); };
+    for_each_overlapping_pair_across(boxes, class_of, may_face, cell, [&](int32_t s, int32_t t) {
+        if (edges[s] > edges[t])
+            std::swap(s, t); // h1 < h2 whatever their classes: the same candidates in any numbering
+        const int32_t h1 = edges[s], h2 = edges[t];
+        const Vec3 n1 = normal_of(h1), n2 = normal_of(h2);
         if (!(n1.dot(n2) < facing_cosine))
             return;
-        const int32_t h1 = edges[s], h2 = edges[t];
         const int32_t a1 = mesh_.tail(h1), b1 = mesh_.head(h1), a2 = mesh_.tail(h2), b2 = mesh_.head(h2);
         if (a1 == a2 || a1 == b2 || b1 == a2 || b1 == b2)
             return;
@@ -333,9 +355,8 @@ bool Surgery::apply(const PinchPlan &plan)
     return true;
 }
 
-void Surgery::remove_tiny_drops()
+void Surgery::remove_tiny_drops(const Components &components)
 {
-    const Components components = connected_components(mesh_);
     for (int32_t c = 0; c < components.count; ++c) {
         if (!components.closed[c])
             continue;
@@ -543,8 +564,8 @@ TopologyCounts Surgery::finish(TriMesh &mesh, std::vector<int32_t> &hints)
 
 } // namespace
 
-TopologyCounts change_topology(TriMesh &mesh, SurfaceData &data, double merge_distance, double edge_length,
-                               std::vector<int32_t> &origin_hints)
+TopologyCounts change_topology(TriMesh &mesh, SurfaceData &data, Components &components, double merge_distance,
+                               double edge_length, std::vector<int32_t> &origin_hints)
 {
     TopologyCounts counts;
     // Merges first, on the mesh as it came; then pinches, on the mesh the merges left; then,
@@ -559,12 +580,14 @@ TopologyCounts change_topology(TriMesh &mesh, SurfaceData &data, double merge_di
         if (stage == 0) {
             surgery.merge_facing_sheets();
         } else {
-            surgery.remove_tiny_drops();
+            surgery.remove_tiny_drops(components);
             if (stage == 1)
                 surgery.pinch_thin_necks();
         }
         surgery.undo_crossing_events();
         const TopologyCounts made = surgery.finish(mesh, origin_hints);
+        if (made.merges + made.pinches + made.removals > 0)
+            components = connected_components(mesh);
         counts.merges += made.merges;
         counts.pinches += made.pinches;
         counts.removals += made.removals;

@@ -26,6 +26,7 @@
 #pragma once
 
 #include "adapt/surface_data.hpp"
+#include "mesh/components.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -38,10 +39,11 @@ struct TopologyCounts {
     double volume_change = 0;
 };
 
-// `merge_distance`: d as a ratio of l; `edge_length`: l where data.size does not give it.
-// `origin_hints`: per vertex of the mesh on entry a triangle of the mesh as the call found
-// it; on return, per vertex of the returned mesh.
-TopologyCounts change_topology(TriMesh &mesh, SurfaceData &data, double merge_distance, double edge_length,
-                               std::vector<int32_t> &origin_hints);
+// `components`: those of the mesh on entry, numbered and indexed; on return those of the
+// returned mesh, likewise. `merge_distance`: d as a ratio of l; `edge_length`: l where
+// data.size does not give it. `origin_hints`: per vertex of the mesh on entry a triangle
+// of the mesh as the call found it; on return, per vertex of the returned mesh.
+TopologyCounts change_topology(TriMesh &mesh, SurfaceData &data, Components &components, double merge_distance,
+                               double edge_length, std::vector<int32_t> &origin_hints);
 
 } // namespace sfa

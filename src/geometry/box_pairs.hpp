@@ -24,29 +24,67 @@ inline bool boxes_overlap(const Box &a, const Box &b)
     return (a[0] - b[1]).maxCoeff() <= 0 && (b[0] - a[1]).maxCoeff() <= 0;
 }
 
-// Calls visit(s, t), s < t, once for every two overlapping boxes in different groups
-// (group(s) != group(t), ints), from parallel loops of `threads` threads (visit may use
-// thread_index() for its own scratch; called from a parallel loop of its own, pass 1: a
-// nested loop would number its threads from 0 again). `cell` is the grid's cell size,
-// about the size of a typical box. Boxes with a NaN corner overlap nothing. The groups are
-// compared before the boxes, in the grid's own copy: where most overlapping pairs are of
-// one group and never wanted, they cost a comparison of two ints each.
-template <class Group, class Visit>
-void for_each_overlapping_pair_across(const std::vector<Box> &boxes, Group &&group, double cell, Visit &&visit,
-                                      [[maybe_unused]] int threads = loop_threads()) // unused without OpenMP
+namespace detail {
+
+// The boxes that go into a grid of cells `cell` wide (small), in increasing order, and
+// those that would cover too many of its cells (large), compared with every box instead.
+struct BoxesBySize {
+    std::vector<int32_t> small, large;
+    std::vector<char> is_large; // per box
+};
+
+inline BoxesBySize boxes_by_size(const std::vector<Box> &boxes, double cell)
+{
+    BoxesBySize by_size;
+    by_size.is_large.assign(boxes.size(), 0);
+    for (int32_t t = 0; t < static_cast<int32_t>(boxes.size()); ++t) {
+        const bool fits = (boxes[t][1] - boxes[t][0]).maxCoeff() <= large_span * cell; // false for NaN
+        (fits ? by_size.small : by_size.large).push_back(t);
+        by_size.is_large[t] = !fits;
+    }
+    return by_size;
+}
+
+// The lowest corner of the small boxes (at least one).
+inline Vec3 lowest_corner(const std::vector<Box> &boxes, const std::vector<int32_t> &small)
+{
+    Vec3 lowest = boxes[small[0]][0];
+    for (int32_t t : small)
+        lowest = lowest.cwiseMin(boxes[t][0]);
+    return lowest;
+}
+
+// Calls visit(s, t), s < t, for every pair of overlapping boxes, one of them large, that
+// may_pair(s, t) wants.
+template <class MayPair, class Visit>
+void pairs_with_large_boxes(const std::vector<Box> &boxes, const BoxesBySize &by_size, MayPair &&may_pair,
+                            Visit &&visit, [[maybe_unused]] int threads)
 {
     const int32_t n = static_cast<int32_t>(boxes.size());
-    std::vector<int32_t> small, large;
-    std::vector<char> is_large(static_cast<size_t>(n), 0);
-    for (int32_t t = 0; t < n; ++t) {
-        const bool fits = (boxes[t][1] - boxes[t][0]).maxCoeff() <= large_span * cell; // false for NaN
-        (fits ? small : large).push_back(t);
-        is_large[t] = !fits;
+    const int64_t count = static_cast<int64_t>(by_size.large.size());
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
+    for (int64_t i = 0; i < count; ++i) {
+        const int32_t s = by_size.large[static_cast<size_t>(i)];
+        for (int32_t t = 0; t < n; ++t)
+            if (t != s && !(by_size.is_large[t] && t < s) && may_pair(s, t) && boxes_overlap(boxes[s], boxes[t]))
+                visit(std::min(s, t), std::max(s, t));
     }
+}
+
+} // namespace detail
+
+// Calls visit(s, t), s < t, once for every two overlapping boxes, from parallel loops of
+// `threads` threads (visit may use thread_index() for its own scratch; called from a
+// parallel loop of its own, pass 1: a nested loop would number its threads from 0 again).
+// `cell` is the grid's cell size, about the size of a typical box. Boxes with a NaN corner
+// overlap nothing.
+template <class Visit>
+void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit &&visit,
+                               [[maybe_unused]] int threads = loop_threads()) // unused without OpenMP
+{
+    const detail::BoxesBySize by_size = detail::boxes_by_size(boxes, cell);
+    const std::vector<int32_t> &small = by_size.small;
     if (small.size() >= 2) {
-        Vec3 lowest = boxes[small[0]][0];
-        for (int32_t t : small)
-            lowest = lowest.cwiseMin(boxes[t][0]);
         // Each entry carries what the pairs of its cell compare, so that a cell's pairs read
         // one contiguous run of memory instead of two scattered arrays per pair (the broad
         // phase of collision-safe motion spent most of its time waiting for those reads).
@@ -54,41 +92,63 @@ void for_each_overlapping_pair_across(const std::vector<Box> &boxes, Group &&gro
             Box box;
             GridCell first; // the cell of the box's lowest corner
             int32_t index;  // in `boxes`
-            int32_t group;
         };
         SpatialGrid<Entry> grid; // entries in increasing order of index
-        grid.build(CellFrame{lowest, cell}, static_cast<int32_t>(small.size()),
+        grid.build(CellFrame{detail::lowest_corner(boxes, small), cell}, static_cast<int32_t>(small.size()),
                    [&](int32_t m) { return boxes[small[m]]; },
-                   [&](int32_t m, const GridCell &first) {
-                       return Entry{boxes[small[m]], first, small[m], static_cast<int32_t>(group(small[m]))};
-                   });
+                   [&](int32_t m, const GridCell &first) { return Entry{boxes[small[m]], first, small[m]}; });
         const int64_t buckets = static_cast<int64_t>(grid.bucket_count());
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
         for (int64_t b = 0; b < buckets; ++b)
             grid.for_each_pair_in_bucket(static_cast<size_t>(b), [&](const Entry &m, const Entry &k, uint64_t here) {
                 // Each pair once: in the first cell both boxes cover.
-                if (m.group != k.group && cell_key(first_shared_cell(m.first, k.first)) == here &&
-                    boxes_overlap(m.box, k.box))
+                if (cell_key(first_shared_cell(m.first, k.first)) == here && boxes_overlap(m.box, k.box))
                     visit(m.index, k.index);
             });
     }
-    const int64_t count = static_cast<int64_t>(large.size());
-#pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
-    for (int64_t i = 0; i < count; ++i) {
-        const int32_t s = large[static_cast<size_t>(i)];
-        for (int32_t t = 0; t < n; ++t)
-            if (t != s && !(is_large[t] && t < s) && group(s) != group(t) && boxes_overlap(boxes[s], boxes[t]))
-                visit(std::min(s, t), std::max(s, t));
-    }
+    detail::pairs_with_large_boxes(boxes, by_size, [](int32_t, int32_t) { return true; }, visit, threads);
 }
 
-// Calls visit(s, t), s < t, once for every two overlapping boxes; as above, each box a
-// group of its own.
-template <class Visit>
-void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit &&visit,
-                               int threads = loop_threads())
+// Calls visit(s, t), s < t, once for every two overlapping boxes whose groups may pair
+// (may_pair(group(s), group(t)), symmetric, false for one group; groups are ints), from
+// parallel loops as for_each_overlapping_pair. For searches where most overlapping pairs
+// are of groups that never pair: number the boxes group by group, and the boxes of one
+// group in a cell are one run of the cell's entries; two runs whose groups do not pair are
+// passed over whole. An entry is then the box's number and group alone (8 bytes instead
+// of 80: the few pairs compared read their boxes where they are), so that the grid's
+// memory, written anew at each search, is a tenth.
+template <class Group, class MayPair, class Visit>
+void for_each_overlapping_pair_across(const std::vector<Box> &boxes, Group &&group, MayPair &&may_pair, double cell,
+                                      Visit &&visit,
+                                      [[maybe_unused]] int threads = loop_threads()) // unused without OpenMP
 {
-    for_each_overlapping_pair_across(boxes, [](int32_t t) { return t; }, cell, std::forward<Visit>(visit), threads);
+    const detail::BoxesBySize by_size = detail::boxes_by_size(boxes, cell);
+    const std::vector<int32_t> &small = by_size.small;
+    if (small.size() >= 2) {
+        struct Entry {
+            int32_t thing; // in `small`
+            int32_t group;
+        };
+        SpatialGrid<Entry> grid; // entries in increasing order of thing, and so of box
+        grid.build(CellFrame{detail::lowest_corner(boxes, small), cell}, static_cast<int32_t>(small.size()),
+                   [&](int32_t m) { return boxes[small[m]]; },
+                   [&](int32_t m, const GridCell &) { return Entry{m, static_cast<int32_t>(group(small[m]))}; });
+        const int64_t buckets = static_cast<int64_t>(grid.bucket_count());
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
+        for (int64_t b = 0; b < buckets; ++b)
+            grid.for_each_pair_across_runs(
+                static_cast<size_t>(b), [](const Entry &m, const Entry &k) { return m.group == k.group; },
+                [&](const Entry &m, const Entry &k) { return may_pair(m.group, k.group); },
+                [&](const Entry &m, const Entry &k, uint64_t here) {
+                    const int32_t s = small[m.thing], t = small[k.thing];
+                    // Each pair once: in the first cell both boxes cover.
+                    if (cell_key(first_shared_cell(grid.cells_of(m.thing)[0], grid.cells_of(k.thing)[0])) == here &&
+                        boxes_overlap(boxes[s], boxes[t]))
+                        visit(s, t);
+                });
+    }
+    detail::pairs_with_large_boxes(
+        boxes, by_size, [&](int32_t s, int32_t t) { return may_pair(group(s), group(t)); }, visit, threads);
 }
 
 // Calls visit(s, t), s < t, once for every two overlapping boxes of which one at least is

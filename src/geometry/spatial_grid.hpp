@@ -165,7 +165,21 @@ public:
     // the bucket; key is the cell's. Large things are in no bucket (box_pairs.hpp compares
     // them with every box itself).
     template <class Visit>
-    void for_each_pair_in_bucket(size_t bucket, Visit &&visit) const;
+    void for_each_pair_in_bucket(size_t bucket, Visit &&visit) const
+    {
+        const auto never = [](const Item &, const Item &) { return false; };
+        for_each_pair_across_runs(bucket, never, [](const Item &, const Item &) { return true; }, visit);
+    }
+    // The same for the pairs of entries in two runs that may pair, passing over the others
+    // unseen. A run is a longest stretch of consecutive entries of the bucket for which
+    // same_run(its first, entry) holds; runs_may_pair(first of one run, first of a later
+    // one) says whether the pairs of two runs are wanted (never those within a run). A
+    // bucket's entries come in the order of things, so things numbered group by group make
+    // one run per group and cell: where a cell holds few groups, most of its pairs cost
+    // nothing.
+    template <class SameRun, class RunsMayPair, class Visit>
+    void for_each_pair_across_runs(size_t bucket, SameRun &&same_run, RunsMayPair &&runs_may_pair,
+                                   Visit &&visit) const;
 
 private:
     struct Added {
@@ -444,23 +458,38 @@ bool SpatialGrid<Item>::any_built_in_cells(const GridCell &first, const GridCell
 }
 
 template <class Item>
-template <class Visit>
-void SpatialGrid<Item>::for_each_pair_in_bucket(size_t bucket, Visit &&visit) const
+template <class SameRun, class RunsMayPair, class Visit>
+void SpatialGrid<Item>::for_each_pair_across_runs(size_t bucket, SameRun &&same_run, RunsMayPair &&runs_may_pair,
+                                                  Visit &&visit) const
 {
-    if (dense_) { // one cell per bucket
-        if (bucket_start_[bucket + 1] - bucket_start_[bucket] < 2)
-            return;
-        const int64_t plane = dims_[1] * dims_[2], n = static_cast<int64_t>(bucket);
-        const uint64_t key = cell_key({low_[0] + n / plane, low_[1] + n % plane / dims_[2], low_[2] + n % dims_[2]});
-        for (size_t a = bucket_start_[bucket]; a < bucket_start_[bucket + 1]; ++a)
-            for (size_t b = a + 1; b < bucket_start_[bucket + 1]; ++b)
-                visit(sorted_[a], sorted_[b], key);
+    const size_t begin = bucket_start_[bucket], end = bucket_start_[bucket + 1];
+    if (end - begin < 2)
         return;
+    uint64_t key = 0; // dense: the bucket's one cell
+    if (dense_) {
+        const int64_t plane = dims_[1] * dims_[2], n = static_cast<int64_t>(bucket);
+        key = cell_key({low_[0] + n / plane, low_[1] + n % plane / dims_[2], low_[2] + n % dims_[2]});
     }
-    for (size_t a = bucket_start_[bucket]; a < bucket_start_[bucket + 1]; ++a)
-        for (size_t b = a + 1; b < bucket_start_[bucket + 1]; ++b)
-            if (sorted_key_[a] == sorted_key_[b])
-                visit(sorted_[a], sorted_[b], sorted_key_[a]);
+    const auto end_of_run = [&](size_t first) {
+        size_t e = first + 1;
+        while (e < end && same_run(sorted_[first], sorted_[e]))
+            ++e;
+        return e;
+    };
+    for (size_t run = begin, run_end; run < end; run = run_end) {
+        run_end = end_of_run(run);
+        for (size_t other = run_end, other_end; other < end; other = other_end) {
+            other_end = end_of_run(other);
+            if (!runs_may_pair(sorted_[run], sorted_[other]))
+                continue;
+            for (size_t a = run; a < run_end; ++a)
+                for (size_t b = other; b < other_end; ++b)
+                    if (dense_)
+                        visit(sorted_[a], sorted_[b], key);
+                    else if (sorted_key_[a] == sorted_key_[b])
+                        visit(sorted_[a], sorted_[b], sorted_key_[a]);
+        }
+    }
 }
 
 } // namespace sfa

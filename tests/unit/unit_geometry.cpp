@@ -2,14 +2,18 @@
 // Unit tests of the quadric analysis and the metric: the eigen-solver choice on
 // near-degenerate tensors, the frame rotation of §3.2, metric lengths (eq. 4) and the
 // clamping of eq. 12.
+#include "geometry/direction_classes.hpp"
 #include "geometry/metric.hpp"
 #include "geometry/quadric_error.hpp"
 #include "geometry/triangle_intersection.hpp"
+
+#include "numbers.hpp"
 
 #include <cmath>
 #include <cstdlib>
 #include <cstdarg>
 #include <cstddef>
+#include <limits>
 #include <setjmp.h>
 
 extern "C" {
@@ -179,6 +183,46 @@ void quadric_error_minimum_stays_within_its_shift(void **)
     assert_true(std::abs((landed - x).norm() - 0.1 * Vec3(1, 0, 0.01).norm()) < 1e-12);
 }
 
+// The search for facing sheets passes over two edges whose normals' classes cannot pair:
+// no two directions nearly opposite may ever be in such classes, on a cube's edges and
+// corners (where a direction's class is decided by rounding) as anywhere; and two
+// directions of one smooth sheet, 30 degrees apart, are never compared.
+void direction_classes_part_no_facing_directions(void **)
+{
+    const double cosine = -0.5;
+    const DirectionClasses classes(cosine);
+    Numbers numbers{20261203};
+    const double at_edges[] = {-1, -0.5, 0, 0.5, 1};
+    const auto random_direction = [&]() {
+        if (numbers.pick(2) == 0)
+            return numbers.point(1).normalized().eval();
+        Vec3 n(at_edges[numbers.pick(5)], at_edges[numbers.pick(5)], at_edges[numbers.pick(5)]);
+        n[numbers.pick(3)] = numbers.pick(2) ? 1 : -1;
+        n += numbers.point(1e-15);
+        return n.normalized().eval();
+    };
+    int facing = 0;
+    for (int k = 0; k < 200000; ++k) {
+        const Vec3 a = random_direction(), b = random_direction();
+        const int ca = classes.of(a), cb = classes.of(b);
+        assert_true(ca >= 0 && ca < DirectionClasses::count && cb >= 0 && cb < DirectionClasses::count);
+        if (a.dot(b) < cosine) {
+            ++facing;
+            assert_true(classes.may_pair(ca, cb) && classes.may_pair(cb, ca));
+        }
+        // b turned 30 degrees from a, about a direction across it.
+        const Vec3 across = a.cross(numbers.point(1)).normalized();
+        const Vec3 near = Eigen::AngleAxisd(pi / 6, across) * a;
+        assert_false(classes.may_pair(ca, classes.of(near)));
+    }
+    assert_true(facing > 10000);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (const Vec3 &odd : {Vec3(0, 0, 0), Vec3(nan, 0, 1), Vec3(nan, nan, nan)}) {
+        const int c = classes.of(odd);
+        assert_true(c >= 0 && c < DirectionClasses::count);
+    }
+}
+
 } // namespace
 
 int main()
@@ -194,6 +238,7 @@ int main()
         cmocka_unit_test(tensor_square_roots_match_the_eigen_decomposition),
         cmocka_unit_test(triangle_pairs_intersect_where_they_share_a_point),
         cmocka_unit_test(quadric_error_minimum_stays_within_its_shift),
+        cmocka_unit_test(direction_classes_part_no_facing_directions),
     };
     return cmocka_run_group_tests_name("unit_geometry", tests, nullptr, nullptr);
 }

@@ -14,6 +14,7 @@
 #include <cstdarg>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <setjmp.h>
 #include <utility>
@@ -360,21 +361,29 @@ void pairs_with_a_subset_are_all_pairs_with_one_of_it(void **)
     }
 }
 
-// The search for merge candidates compares only edges of different normal classes: the
-// pairs it is given must be exactly the overlapping pairs of different groups, large boxes
-// (compared with all others outside the grid) among them.
-void pairs_across_groups_are_the_overlapping_pairs_of_different_groups(void **)
+// The search for merge candidates compares only edges whose normal classes may face: the
+// pairs it is given must be exactly the overlapping pairs of groups that may pair, large
+// boxes (compared with all others outside the grid) among them, whether the boxes are
+// numbered group by group (one run per group in a cell, as that search numbers them) or
+// with their groups interleaved (a run per entry).
+void pairs_across_groups_are_the_overlapping_pairs_of_groups_that_may_pair(void **)
 {
     std::vector<Box> boxes = random_boxes(600, 1.0, 0.2, 9);
     boxes.push_back({Vec3(0.05, 0.05, 0.05), Vec3(40, 0.1, 0.1)}); // large
-    const auto group = [](int32_t s) { return s % 6 == 5 ? 4 : s % 6; }; // groups of unequal size
-    Pairs expected;
-    for (const auto &[s, t] : all_pairs(boxes))
-        if (group(s) != group(t))
-            expected.push_back({s, t});
-    assert_true(expected.size() > 100 && expected.size() < all_pairs(boxes).size());
-    assert_same_pairs(
-        pairs_reported([&](auto visit) { for_each_overlapping_pair_across(boxes, group, 0.1, visit); }), expected);
+    const auto may_pair = [](int32_t a, int32_t b) { return a != b && (a + b) % 3 != 0; };
+    const auto interleaved = [](int32_t s) { return s % 6 == 5 ? 4 : s % 6; }; // groups of unequal size
+    const auto in_runs = [](int32_t s) { return s < 50 ? 0 : s < 300 ? 1 : s < 320 ? 2 : s < 500 ? 4 : 5; };
+    for (const auto &group : {std::function<int32_t(int32_t)>(interleaved), std::function<int32_t(int32_t)>(in_runs)}) {
+        Pairs expected;
+        for (const auto &[s, t] : all_pairs(boxes))
+            if (may_pair(group(s), group(t)))
+                expected.push_back({s, t});
+        assert_true(expected.size() > 100 && expected.size() < all_pairs(boxes).size());
+        assert_same_pairs(pairs_reported([&](auto visit) {
+                              for_each_overlapping_pair_across(boxes, group, may_pair, 0.1, visit);
+                          }),
+                          expected);
+    }
 }
 
 } // namespace
@@ -390,7 +399,7 @@ int main()
         cmocka_unit_test(a_query_meets_points_cell_by_cell_in_their_order),
         cmocka_unit_test(cells_of_non_finite_or_far_points_are_clamped),
         cmocka_unit_test(pairs_with_a_subset_are_all_pairs_with_one_of_it),
-        cmocka_unit_test(pairs_across_groups_are_the_overlapping_pairs_of_different_groups),
+        cmocka_unit_test(pairs_across_groups_are_the_overlapping_pairs_of_groups_that_may_pair),
     };
     return cmocka_run_group_tests_name("unit_spatial_grid", tests, nullptr, nullptr);
 }
