@@ -118,7 +118,7 @@ void tensor_in_frame_is_the_rotated_tensor(void **)
             m->major = (random_unit().cross(m->normal)).normalized();
             m->minor = (trial % 2 ? -1.0 : 1.0) * m->normal.cross(m->major);
         }
-        q.m_major = 1 + 10 * std::rand() / (double)RAND_MAX;
+        q.m_major = 1 + 10.0 * std::rand() / RAND_MAX;
         q.m_minor = 1;
         const Eigen::Matrix2d r = frame_rotation(q.frame(), p.frame());
         assert_true((tensor_in_frame(q, p) - r.transpose() * q.tensor() * r).norm() < 1e-12 * q.m_major);
