@@ -421,10 +421,14 @@ void Surgery::undo_crossing_events()
         }
         if (live < 2 || !(cell > 0))
             return;
+        // Crossings the stage did not make are not its to undo: only the pairs with a
+        // triangle an event made or moved are looked at.
+        std::vector<int32_t> of_events;
+        for (size_t f = 0; f < tri_.size(); ++f)
+            if (event_of[f] >= 0)
+                of_events.push_back(static_cast<int32_t>(f));
         std::vector<char> crossing(events_.size(), 0);
-        for_each_overlapping_pair(boxes, 2 * cell / live, [&](int32_t s, int32_t t) {
-            if (event_of[s] < 0 && event_of[t] < 0)
-                return; // crossings the stage did not make are not its to undo
+        for_each_overlapping_pair_with(boxes, of_events, 2 * cell / live, [&](int32_t s, int32_t t) {
             const Triangle &p = tri_[s], &q = tri_[t];
             if (share_a_vertex(p, q) ||
                 !triangles_intersect(pos_[p[0]], pos_[p[1]], pos_[p[2]], pos_[q[0]], pos_[q[1]], pos_[q[2]]))

@@ -165,11 +165,7 @@ public:
     // the bucket; key is the cell's. Large things are in no bucket (box_pairs.hpp compares
     // them with every box itself).
     template <class Visit>
-    void for_each_pair_in_bucket(size_t bucket, Visit &&visit) const
-    {
-        const auto never = [](const Item &, const Item &) { return false; };
-        for_each_pair_across_runs(bucket, never, [](const Item &, const Item &) { return true; }, visit);
-    }
+    void for_each_pair_in_bucket(size_t bucket, Visit &&visit) const;
     // The same for the pairs of entries in two runs that may pair, passing over the others
     // unseen. A run is a longest stretch of consecutive entries of the bucket for which
     // same_run(its first, entry) holds; runs_may_pair(first of one run, first of a later
@@ -204,6 +200,12 @@ private:
     size_t bucket_of(const GridCell &c) const
     {
         return static_cast<size_t>((column_start(c[0], c[1]) + static_cast<uint64_t>(c[2])) & bucket_mask_);
+    }
+    // The key of a dense grid's bucket's one cell.
+    uint64_t dense_key(size_t bucket) const
+    {
+        const int64_t plane = dims_[1] * dims_[2], n = static_cast<int64_t>(bucket);
+        return cell_key({low_[0] + n / plane, low_[1] + n % plane / dims_[2], low_[2] + n % dims_[2]});
     }
     template <class Fn>
     static void for_each_cell(const GridCell &first, const GridCell &last, Fn &&fn)
@@ -458,6 +460,25 @@ bool SpatialGrid<Item>::any_built_in_cells(const GridCell &first, const GridCell
 }
 
 template <class Item>
+template <class Visit>
+void SpatialGrid<Item>::for_each_pair_in_bucket(size_t bucket, Visit &&visit) const
+{
+    if (dense_) { // one cell per bucket
+        if (bucket_start_[bucket + 1] - bucket_start_[bucket] < 2)
+            return;
+        const uint64_t key = dense_key(bucket);
+        for (size_t a = bucket_start_[bucket]; a < bucket_start_[bucket + 1]; ++a)
+            for (size_t b = a + 1; b < bucket_start_[bucket + 1]; ++b)
+                visit(sorted_[a], sorted_[b], key);
+        return;
+    }
+    for (size_t a = bucket_start_[bucket]; a < bucket_start_[bucket + 1]; ++a)
+        for (size_t b = a + 1; b < bucket_start_[bucket + 1]; ++b)
+            if (sorted_key_[a] == sorted_key_[b])
+                visit(sorted_[a], sorted_[b], sorted_key_[a]);
+}
+
+template <class Item>
 template <class SameRun, class RunsMayPair, class Visit>
 void SpatialGrid<Item>::for_each_pair_across_runs(size_t bucket, SameRun &&same_run, RunsMayPair &&runs_may_pair,
                                                   Visit &&visit) const
@@ -465,11 +486,7 @@ void SpatialGrid<Item>::for_each_pair_across_runs(size_t bucket, SameRun &&same_
     const size_t begin = bucket_start_[bucket], end = bucket_start_[bucket + 1];
     if (end - begin < 2)
         return;
-    uint64_t key = 0; // dense: the bucket's one cell
-    if (dense_) {
-        const int64_t plane = dims_[1] * dims_[2], n = static_cast<int64_t>(bucket);
-        key = cell_key({low_[0] + n / plane, low_[1] + n % plane / dims_[2], low_[2] + n % dims_[2]});
-    }
+    const uint64_t key = dense_ ? dense_key(bucket) : 0;
     const auto end_of_run = [&](size_t first) {
         size_t e = first + 1;
         while (e < end && same_run(sorted_[first], sorted_[e]))
