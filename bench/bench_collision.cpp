@@ -10,15 +10,14 @@
 #include "flows.hpp"
 #include "geometry/collision_time.hpp"
 #include "mesh/parallel.hpp"
-#include "mesh/validate.hpp"
+
+#include "jittered_sphere_mesh.hpp"
 
 extern "C" {
-#include "jittered_sphere.h"
 #include "timing.h"
 }
 
 #include <cstdio>
-#include <cstdlib>
 #include <vector>
 
 using namespace sfa;
@@ -67,14 +66,7 @@ int main(int argc, char **)
 {
     const bool sphere_only = argc > 1; // for a profile of the common case alone
     const ThreadLimit one_thread(1);
-    int32_t nverts, ntris;
-    double *xyz;
-    int32_t *tris;
-    if (jittered_sphere(frequency, &nverts, &xyz, &ntris, &tris) != 0)
-        return 1;
-    TriMesh mesh = validated_mesh(MeshInput{nverts, xyz, ntris, tris, 0, false});
-    std::free(xyz);
-    std::free(tris);
+    TriMesh mesh = jittered_sphere_mesh(frequency);
     std::vector<Vec3> velocity = enright_velocity_on_unit_sphere(mesh.pos);
     const double dt = 0.015; // the paper's Enright step
     time_first_approach("jittered_sphere", mesh, velocity, dt);

@@ -10,16 +10,15 @@
 #include "geometry/crossing_guard.hpp"
 #include "geometry/self_intersection.hpp"
 #include "mesh/parallel.hpp"
-#include "mesh/validate.hpp"
+
+#include "jittered_sphere_mesh.hpp"
 
 extern "C" {
-#include "jittered_sphere.h"
 #include "timing.h"
 }
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <vector>
 
 using namespace sfa;
@@ -84,14 +83,7 @@ void time_searches(const char *surface, const TriMesh &mesh)
 int main()
 {
     const ThreadLimit one_thread(1);
-    int32_t nverts, ntris;
-    double *xyz;
-    int32_t *tris;
-    if (jittered_sphere(frequency, &nverts, &xyz, &ntris, &tris) != 0)
-        return 1;
-    TriMesh mesh = validated_mesh(MeshInput{nverts, xyz, ntris, tris, 0, false});
-    std::free(xyz);
-    std::free(tris);
+    TriMesh mesh = jittered_sphere_mesh(frequency);
     time_searches("jittered_sphere", mesh);
     for (Vec3 &p : mesh.pos)
         p.z() *= 0.01;
