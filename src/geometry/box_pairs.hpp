@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Every pair of overlapping boxes, each once: the broad phase of the self-intersection
-// count and of collision-safe motion. Boxes of up to a few cells go into the uniform grid
+// count and of collision-safe motion, and (of groups that may pair) of the merge search. Boxes of up to a few cells go into the uniform grid
 // (spatial_grid.hpp); a box larger than that (large_span cells on an axis: a long triangle
 // among short ones, a vertex thrown far in one step) would be entered in the cube of its
 // size in cells, millions for one sliver, so it is compared with every other box instead. Time and memory then
