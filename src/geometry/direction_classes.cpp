@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "geometry/direction_classes.hpp"
 
+#include "geometry/angles.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -8,10 +10,9 @@
 namespace sfa {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 // A direction's square is found by rounding: one just past a square's edge may be placed in
 // the next. Widening every class by this angle covers that.
-constexpr double margin = pi / 180;
+constexpr double margin = radians_per_degree;
 
 // The square of a coordinate u in [-1, 1] of the central projection; NaN in the first.
 int square_of(double u)

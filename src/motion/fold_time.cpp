@@ -14,7 +14,7 @@ namespace {
 
 // frexp's exponent of x and 2^by (ldexp(1, by)), read from and written into the bits of a
 // normal double: the library's calls cost more than the rest of a triangle's fold time
-// (2 % of a plain Enright run's instructions), and this runs for every triangle at every
+// (3 % of a plain vortex T = 2 run's instructions), and this runs for every triangle at every
 // stage of every step. The library's own for what is not normal.
 int binary_exponent(double x)
 {
