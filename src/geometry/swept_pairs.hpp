@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -177,6 +178,14 @@ inline void sort_spread_keys(std::vector<std::pair<double, int32_t>> &items,
     items.swap(scratch);
 }
 
+// The float nearest to x, the largest one beyond their range. Non-decreasing in x, as
+// the difference x - o is for any o: two boxes that overlap in doubles overlap in floats.
+inline float nearest_float(double x)
+{
+    constexpr double largest = std::numeric_limits<float>::max();
+    return static_cast<float>(std::clamp(x, -largest, largest));
+}
+
 } // namespace detail
 
 // Blocks are this many times the mean size of a triangle's box: small enough that the
@@ -193,7 +202,7 @@ constexpr double swept_pairs_block_size = 12;
 template <class Allocator, class Visit>
 void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &triangles, Visit &&visit)
 {
-    using detail::box_union;
+    using detail::box_union, detail::nearest_float;
     const int32_t n = static_cast<int32_t>(triangles.size());
     if (n < 2)
         return;
@@ -313,23 +322,27 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
         int32_t triangle;
         bool own; // block b's, not a guest
     };
-    // A box in the sweep: on the sweep axis, the strip axis and the third, low then high;
-    // with all that decides whether a pair in its strip is visited. The corners are four
-    // lanes (the last twice), so that whether two triangles share one is three lane-wise
-    // comparisons (GCC's and Clang's vector extension) rather than nine.
-    using CornerLanes = int32_t __attribute__((vector_size(16)));
+    // A box in the sweep, in floats relative to the lowest corner of the block's boxes
+    // (nearest_float: boxes that overlap still do, and a few more may), which halves the
+    // bytes a comparison reads and lets one four-lane comparison test both axes across the
+    // sweep. The corners are four lanes too (the last twice), so that whether two
+    // triangles share one is three lane-wise comparisons rather than nine (GCC's and
+    // Clang's vector extension).
+    using Lanes = int32_t __attribute__((vector_size(16)));
+    using FloatLanes = float __attribute__((vector_size(16)));
     using HalfLanes = int64_t __attribute__((vector_size(16)));
     struct Row {
-        double span[6];
-        CornerLanes corners;
-        int32_t first_strip; // the first strip the box covers
-        int32_t own;         // 1 if the triangle is the block's, 0 if a guest
+        FloatLanes across;   // low, low, -high, -high on the strip axis and the third
+        float low, high;     // on the sweep axis
+        int32_t flags;       // own_row: the block's triangle, not a guest; first_row: the first strip it covers
+        Lanes corners;
     };
+    constexpr int32_t own_row = 1, first_row = 2;
     struct Sweep {
         std::vector<std::pair<double, int32_t>> by_low, sorting; // (low on the sweep axis, entry)
         std::vector<size_t> bucket_start;
         std::vector<int32_t> strip_start, strip_fill;
-        std::vector<Row> rows;         // strip by strip, each in order of low on the sweep axis
+        FillBuffer<Row> rows;          // strip by strip, each in order of low on the sweep axis
         std::vector<int32_t> triangle; // of each row
     };
     const auto compare_block = [&](int32_t b, std::vector<Entry> &entries, Sweep &sweep, int thread) {
@@ -396,19 +409,19 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
         sweep.strip_fill.assign(sweep.strip_start.begin(), sweep.strip_start.end() - 1);
         sweep.rows.resize(static_cast<size_t>(sweep.strip_start[strips]));
         sweep.triangle.resize(sweep.rows.size());
+        const Vec3 origin = bounds[0];
         for (const auto &o : sweep.by_low) {
             const Entry &e = entries[static_cast<size_t>(o.second)];
-            Row row;
-            for (int k = 0; k < 3; ++k) {
-                row.span[k] = e.box[0][axis[k]];
-                row.span[3 + k] = e.box[1][axis[k]];
-            }
+            const Vec3 from = e.box[0] - origin, to = e.box[1] - origin;
+            Row row{{nearest_float(from[axis[1]]), nearest_float(from[axis[2]]), -nearest_float(to[axis[1]]),
+                     -nearest_float(to[axis[2]])},
+                    nearest_float(from[axis[0]]), nearest_float(to[axis[0]]), 0, {}};
             const Triangle &corners = triangles[e.triangle].corners;
-            row.corners = CornerLanes{corners[0], corners[1], corners[2], corners[2]};
-            row.first_strip = strip_of(e.box[0][axis[1]]);
-            row.own = e.own;
-            for (int s = row.first_strip, last = strip_of(e.box[1][axis[1]]); s <= last; ++s) {
+            row.corners = Lanes{corners[0], corners[1], corners[2], corners[2]};
+            const int first_strip = strip_of(e.box[0][axis[1]]);
+            for (int s = first_strip, last = strip_of(e.box[1][axis[1]]); s <= last; ++s) {
                 const int32_t at = sweep.strip_fill[s]++;
+                row.flags = (e.own ? own_row : 0) | (s == first_strip ? first_row : 0);
                 sweep.rows[at] = row;
                 sweep.triangle[at] = e.triangle;
             }
@@ -416,20 +429,20 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
         for (int s = 0; s < strips; ++s)
             for (int32_t i = sweep.strip_start[s], end = sweep.strip_start[s + 1]; i < end; ++i) {
                 const Row a = sweep.rows[i];
-                const CornerLanes a0 = CornerLanes{} + a.corners[0], a1 = CornerLanes{} + a.corners[1],
-                                  a2 = CornerLanes{} + a.corners[2];
-                for (int32_t j = i + 1; j < end && sweep.rows[j].span[0] <= a.span[3]; ++j) {
+                // c's box meets a's across the sweep when c.across <= limit, lane by lane.
+                const FloatLanes limit = {-a.across[2], -a.across[3], -a.across[0], -a.across[1]};
+                const Lanes a0 = Lanes{} + a.corners[0], a1 = Lanes{} + a.corners[1], a2 = Lanes{} + a.corners[2];
+                for (int32_t j = i + 1; j < end && sweep.rows[j].low <= a.high; ++j) {
                     const Row &c = sweep.rows[j];
                     // One branch, nearly always not taken: & rather than &&, and the empty
                     // asm makes the compiler compute the whole condition before it branches
                     // (it split off a branch on the boxes, taken about half the time, and
                     // bench_collision's sphere took 5 to 8 % longer). Most pairs whose boxes
-                    // overlap are neighbours in the mesh, sharing a corner.
-                    const HalfLanes same = reinterpret_cast<HalfLanes>((c.corners == a0) | (c.corners == a1) |
-                                                                       (c.corners == a2));
-                    int pass = (c.span[1] <= a.span[4]) & (a.span[1] <= c.span[4]) & (c.span[2] <= a.span[5]) &
-                        (a.span[2] <= c.span[5]) & (std::max(a.first_strip, c.first_strip) == s) &
-                        ((a.own | c.own) != 0) & ((same[0] | same[1]) == 0);
+                    // overlap are neighbours in the mesh, sharing a corner. A pair counts
+                    // in the first strip both cover, and not if both are guests.
+                    const HalfLanes apart = reinterpret_cast<HalfLanes>(
+                        (c.across > limit) | (c.corners == a0) | (c.corners == a1) | (c.corners == a2));
+                    int pass = ((apart[0] | apart[1]) == 0) & ((a.flags | c.flags) == (own_row | first_row));
                     asm("" : "+r"(pass));
                     if (pass)
                         visit(std::min(sweep.triangle[i], sweep.triangle[j]),

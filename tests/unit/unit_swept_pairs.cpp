@@ -12,6 +12,7 @@
 #include <cstdarg>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <set>
 #include <setjmp.h>
 #include <utility>
@@ -205,6 +206,63 @@ void neighbours_are_not_visited(void **)
     assert_true(meeting > 100);
 }
 
+// Triangles apart from each other in a grid far from the origin, their boxes touching
+// exactly (each cell's corners computed once), at rest: every two whose boxes touch are
+// visited. The sweep compares the boxes in floats relative to the block, whose last
+// place (about 1e-9 here) is far coarser than the boxes' widening for rounding (1e-14 of
+// the coordinates): only a conversion that keeps their order keeps them touching.
+void boxes_that_touch_far_from_the_origin_are_visited(void **)
+{
+    constexpr int n = 30;
+    const double base = 1e4 + 0.1, h = 0.001;
+    double at[n + 1];
+    for (int i = 0; i <= n; ++i)
+        at[i] = base + i * h;
+    Moving m;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (const Vec3 &p : {Vec3(at[i], at[j], base), Vec3(at[i + 1], at[j], base), Vec3(at[i], at[j + 1], base)})
+                m.x.push_back(p);
+    m.d.assign(m.x.size(), Vec3::Zero());
+    const auto pairs = visited_pairs(m);
+    const std::vector<SweptTriangle> boxes = swept(m);
+    int touching = 0;
+    for (int32_t s = 0; s < m.count(); ++s)
+        for (int32_t t = s + 1; t < m.count(); ++t)
+            if (boxes_overlap(swept_in_frame(boxes[s], Vec3::Zero()), swept_in_frame(boxes[t], Vec3::Zero()))) {
+                ++touching;
+                if (!pairs.count({s, t}))
+                    fail_msg("the boxes of triangles %d and %d touch but the pair was not visited", s, t);
+            }
+    assert_int_equal(touching, 4 * (n - 1) * (n - 1) + 2 * (n - 1)); // sides and corners
+}
+
+// The rows' floats keep the order of their doubles, whatever is subtracted from them
+// first (the block's corner), so that boxes that overlap in doubles overlap in floats:
+// through the floats' smallest and largest numbers and beyond their range.
+void nearest_floats_keep_the_order(void **)
+{
+    Numbers rng{20261204};
+    std::vector<double> values = {0.0, 1e-320, -1e-320, 1e-45, 0.1, -0.1, 3.4028234663852886e38, 3.5e38,
+                                  -3.5e38, 1e300, -1e300, std::numeric_limits<double>::max(),
+                                  -std::numeric_limits<double>::max()};
+    for (int i = 0; i < 100000; ++i)
+        values.push_back((i % 2 ? 1 : -1) * std::ldexp(rng.uniform(1, 2), static_cast<int>(rng.uniform(-160, 140))));
+    for (int i = 0; i < 1000; ++i) // neighbouring doubles, which round to one float or two
+        values.push_back(std::nextafter(0.1 + i * 1e-17, 1.0));
+    std::sort(values.begin(), values.end());
+    for (const double origin : {0.0, 0.1, -1e4, 1e30}) {
+        float previous = -std::numeric_limits<float>::infinity();
+        for (const double x : values) {
+            const float f = detail::nearest_float(x - origin);
+            if (!(f >= previous))
+                fail_msg("%.17g - %g: %.9g comes before the float of a smaller double", x, origin, f);
+            previous = f;
+        }
+    }
+    assert_true(detail::nearest_float(1e300) == std::numeric_limits<float>::max());
+}
+
 // The blocks' numbering: distinct keys numbered in the order they first come, equal keys
 // alike, through the table's growth (5,000 distinct keys, its first size 1,024).
 void keys_are_numbered_in_order_of_first_coming(void **)
@@ -260,6 +318,8 @@ int main()
         cmocka_unit_test(every_pair_that_meets_is_visited_once),
         cmocka_unit_test(a_surface_moving_as_one_visits_its_neighbours_only),
         cmocka_unit_test(neighbours_are_not_visited),
+        cmocka_unit_test(boxes_that_touch_far_from_the_origin_are_visited),
+        cmocka_unit_test(nearest_floats_keep_the_order),
         cmocka_unit_test(keys_are_numbered_in_order_of_first_coming),
         cmocka_unit_test(spread_keys_sort_as_std_sort_does),
     };
