@@ -193,7 +193,7 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
     std::vector<std::vector<MergeCandidate>> found(static_cast<size_t>(loop_threads()));
     const auto class_of = [&](int32_t s) { return normal_class[s]; };
     const auto may_face = [&](int a, int b) { return classes.may_pair(a, b); };
-    for_each_overlapping_pair_across(boxes, class_of, may_face, cell, [&](int32_t s, int32_t t) {
+    for_each_overlapping_pair_across(boxes, DirectionClasses::count, class_of, may_face, cell, [&](int32_t s, int32_t t) {
         if (edges[s] > edges[t])
             std::swap(s, t); // h1 < h2 whatever their classes: the same candidates in any numbering
         const int32_t h1 = edges[s], h2 = edges[t];

@@ -373,17 +373,50 @@ void pairs_across_groups_are_the_overlapping_pairs_of_groups_that_may_pair(void 
     const auto may_pair = [](int32_t a, int32_t b) { return a != b && (a + b) % 3 != 0; };
     const auto interleaved = [](int32_t s) { return s % 6 == 5 ? 4 : s % 6; }; // groups of unequal size
     const auto in_runs = [](int32_t s) { return s < 50 ? 0 : s < 300 ? 1 : s < 320 ? 2 : s < 500 ? 4 : 5; };
-    for (const auto &group : {std::function<int32_t(int32_t)>(interleaved), std::function<int32_t(int32_t)>(in_runs)}) {
+    // By place, in six slabs across x: most boxes overlap only boxes of their own slab or
+    // of the next, and are left out of the grid before it is built.
+    const auto by_place = [&](int32_t s) {
+        return static_cast<int32_t>(std::clamp(std::floor(6 * boxes[s][0].x()), 0.0, 5.0));
+    };
+    for (const auto &group : {std::function<int32_t(int32_t)>(interleaved), std::function<int32_t(int32_t)>(in_runs),
+                              std::function<int32_t(int32_t)>(by_place)}) {
         Pairs expected;
         for (const auto &[s, t] : all_pairs(boxes))
             if (may_pair(group(s), group(t)))
                 expected.push_back({s, t});
         assert_true(expected.size() > 100 && expected.size() < all_pairs(boxes).size());
         assert_same_pairs(pairs_reported([&](auto visit) {
-                              for_each_overlapping_pair_across(boxes, group, may_pair, 0.1, visit);
+                              for_each_overlapping_pair_across(boxes, 6, group, may_pair, 0.1, visit);
                           }),
                           expected);
     }
+}
+
+// The grid of the merge search holds only the boxes near a box of a group that pairs
+// with theirs: two groups on either side of x = 0.5, pairing only with each other; boxes
+// farther from it than two coarse cells are left out, and every box that overlaps one of
+// the other group is kept.
+void boxes_far_from_a_pairing_group_are_left_out(void **)
+{
+    const std::vector<Box> boxes = random_boxes(4000, 1.0, 0.01, 11);
+    std::vector<int32_t> every(boxes.size());
+    for (int32_t s = 0; s < static_cast<int32_t>(boxes.size()); ++s)
+        every[s] = s;
+    const auto side = [&](int32_t s) { return boxes[s][0].x() < 0.5 ? 0 : 1; };
+    const auto may_pair = [](int a, int b) { return a != b; };
+    const std::vector<int32_t> kept = detail::boxes_near_a_pairing_group(boxes, every, 2, side, may_pair, 0.05);
+    const double coarse = std::max(0.05, 1.01 / std::cbrt(4.0 * 4000)); // as widened for the boxes' bounds
+    std::vector<char> is_kept(boxes.size(), 0);
+    for (int32_t s : kept) {
+        is_kept[s] = 1;
+        if (!(std::abs(boxes[s][0].x() - 0.5) < 2 * coarse + 0.01))
+            fail_msg("box %d at x = %g is kept, far from the other group", s, boxes[s][0].x());
+    }
+    for (const auto &[s, t] : all_pairs(boxes))
+        if (side(s) != side(t) && !(is_kept[s] && is_kept[t]))
+            fail_msg("boxes %d and %d overlap across the groups but were left out", s, t);
+    print_message("%zu of %zu boxes kept\n", kept.size(), boxes.size());
+    assert_true(kept.size() < boxes.size() / 2);
 }
 
 } // namespace
@@ -400,6 +433,7 @@ int main()
         cmocka_unit_test(cells_of_non_finite_or_far_points_are_clamped),
         cmocka_unit_test(pairs_with_a_subset_are_all_pairs_with_one_of_it),
         cmocka_unit_test(pairs_across_groups_are_the_overlapping_pairs_of_groups_that_may_pair),
+        cmocka_unit_test(boxes_far_from_a_pairing_group_are_left_out),
     };
     return cmocka_run_group_tests_name("unit_spatial_grid", tests, nullptr, nullptr);
 }
