@@ -6,6 +6,7 @@
 #include "mesh/validate.hpp"
 #include "surfadapt.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstddef>
@@ -53,6 +54,52 @@ void a_sheet_thinner_than_an_edge_is_watched_a_thick_body_is_not(void **)
     // The unit cube's opposite faces are eight edges apart; adjacent faces meet at right
     // angles (their normals do not face each other).
     assert_int_equal(count(near_facing_sheet(box_mesh(1))), 0);
+}
+
+// The rule of near_facing_sheet by brute force, on a sphere whose one side is pressed flat
+// (two sheets facing each other nearer than an edge there, a smooth surface elsewhere):
+// of every two vertices that are not neighbours, whose normals
+// point against each other and that are nearer than the sum of their longest edges, one
+// at least is watched. The search looks only near vertices whose normals may face; this
+// checks that it leaves out none of them.
+void every_two_vertices_whose_fans_may_meet_are_watched(void **)
+{
+    const double centre[3] = {0, 0, 0};
+    int32_t nverts = 0, ntris = 0;
+    double *xyz = nullptr;
+    int32_t *tris = nullptr;
+    assert_int_equal(geodesic_sphere(40, 1, centre, &nverts, &xyz, &ntris, &tris), 0);
+    for (int32_t v = 0; v < nverts; ++v) // x > 0.55 pressed to a hundredth, x < 0.3 a sphere
+        xyz[3 * v + 2] *= std::clamp(1 - (xyz[3 * v] - 0.3) / 0.25, 0.01, 1.0);
+    const TriMesh mesh = validated_mesh(MeshInput{nverts, xyz, ntris, tris, 0, false});
+    std::free(xyz);
+    std::free(tris);
+    const int32_t n = mesh.num_vertices();
+    std::vector<Vec3> normal(n, Vec3::Zero());
+    std::vector<double> reach(n, 0);
+    for (int32_t v = 0; v < n; ++v)
+        mesh.for_each_outgoing(v, [&](int32_t h) {
+            const Triangle &t = mesh.tri[TriMesh::face(h)];
+            normal[v] += (mesh.pos[t[1]] - mesh.pos[t[0]]).cross(mesh.pos[t[2]] - mesh.pos[t[0]]);
+            reach[v] = std::max(reach[v], (mesh.pos[mesh.head(h)] - mesh.pos[v]).norm());
+        });
+    const std::vector<char> watched = near_facing_sheet(mesh);
+    int32_t pairs = 0;
+    for (int32_t v = 0; v < n; ++v)
+        for (int32_t w = v + 1; w < n; ++w) {
+            if (!(normal[v].dot(normal[w]) < 0) || !((mesh.pos[w] - mesh.pos[v]).norm() < reach[v] + reach[w]))
+                continue;
+            bool neighbours = false;
+            mesh.for_each_neighbour(v, [&](int32_t u, int32_t) { neighbours = neighbours || u == w; });
+            if (neighbours)
+                continue;
+            ++pairs;
+            if (!watched[v] && !watched[w])
+                fail_msg("vertices %d and %d may meet, but neither is watched", v, w);
+        }
+    print_message("%d pairs of vertices may meet; %d of %d vertices watched\n", pairs, count(watched), n);
+    assert_true(pairs > 100);
+    assert_true(count(watched) < n / 2); // the sphere's side is not
 }
 
 // The face of the plane z = `z` whose centre is nearest to the middle of the slab.
@@ -196,6 +243,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(a_sheet_thinner_than_an_edge_is_watched_a_thick_body_is_not),
+        cmocka_unit_test(every_two_vertices_whose_fans_may_meet_are_watched),
         cmocka_unit_test(a_face_moved_through_the_other_side_of_a_sheet_crosses_it),
         cmocka_unit_test(watched_vertices_follow_the_numbering),
         cmocka_unit_test(features_are_watched_but_not_near_a_sheet),
