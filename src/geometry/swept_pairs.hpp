@@ -68,6 +68,16 @@ inline Box box_union(const Box &a, const Box &b)
     return {a[0].cwiseMin(b[0]), a[1].cwiseMax(b[1])};
 }
 
+// Grows `into` to hold `box`, whose corners are numbers; `into` is none (NaN) until the
+// first box.
+inline void widen(Box &into, const Box &box)
+{
+    if (std::isnan(into[0][0]))
+        into = box;
+    else
+        into = {into[0].cwiseMin(box[0]), into[1].cwiseMax(box[1])};
+}
+
 // The mean of the boxes' largest extents, of those without a NaN corner; 0 if none.
 inline double mean_extent(const std::vector<Box> &boxes)
 {
@@ -202,7 +212,7 @@ constexpr double swept_pairs_block_size = 12;
 template <class Allocator, class Visit>
 void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &triangles, Visit &&visit)
 {
-    using detail::box_union, detail::nearest_float;
+    using detail::nearest_float, detail::widen;
     const int32_t n = static_cast<int32_t>(triangles.size());
     if (n < 2)
         return;
@@ -280,10 +290,15 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
             around[p] = {{none, none}, {none, none}, {}, 0};
             for (int32_t i = part_start[p]; i < part_start[p + 1]; ++i) {
                 const SweptTriangle &t = triangles[order[i]];
-                reach[b] = box_union(reach[b], swept_in_frame(t, frame[b]));
-                at_rest[b] = box_union(at_rest[b], swept_in_frame(t, Vec3::Zero()));
-                around[p].start = box_union(around[p].start, t.start);
-                around[p].motion = box_union(around[p].motion, t.motion);
+                // A triangle with a corner or a motion that is not a number overlaps
+                // nothing and adds nothing (box_union's rule, tested once a triangle).
+                if (!(t.start[0].allFinite() && t.start[1].allFinite() && t.motion[0].allFinite() &&
+                      t.motion[1].allFinite()))
+                    continue;
+                widen(reach[b], swept_in_frame(t, frame[b]));
+                widen(at_rest[b], swept_in_frame(t, Vec3::Zero()));
+                widen(around[p].start, t.start);
+                widen(around[p].motion, t.motion);
                 around[p].scale = std::max(around[p].scale, t.scale);
             }
         }
