@@ -72,10 +72,12 @@ inline Box box_union(const Box &a, const Box &b)
 // first box.
 inline void widen(Box &into, const Box &box)
 {
-    if (std::isnan(into[0][0]))
+    if (std::isnan(into[0][0])) {
         into = box;
-    else
-        into = {into[0].cwiseMin(box[0]), into[1].cwiseMax(box[1])};
+        return;
+    }
+    into[0] = into[0].cwiseMin(box[0]);
+    into[1] = into[1].cwiseMax(box[1]);
 }
 
 // The mean of the boxes' largest extents, of those without a NaN corner; 0 if none.
