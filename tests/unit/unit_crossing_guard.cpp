@@ -29,7 +29,9 @@ TriMesh box_mesh(double thickness)
 {
     const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, thickness};
     sfa_mesh_data box = shape_box(8, lo, hi);
-    return validated_mesh(MeshInput{box.nverts, box.xyz, box.ntris, box.tris, 0, false});
+    TriMesh mesh = validated_mesh(MeshInput{box.nverts, box.xyz, box.ntris, box.tris, 0, false});
+    mesh_free(&box);
+    return mesh;
 }
 
 int32_t count(const std::vector<char> &marks)
