@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Every pair of overlapping boxes, each once: the broad phase of the self-intersection
-// count and of collision-safe motion, and (of groups that may pair) of the merge search.
+// count and of collision-safe motion, and (of groups that may pair) of the merge search;
+// and the boxes near one of a group that may pair with theirs, for the merge search and
+// the crossing guard's search for facing sheets.
 // Boxes of up to a few cells go into the uniform grid (spatial_grid.hpp); a box larger
 // than that (large_span cells on an axis: a long triangle among short ones, a vertex
 // thrown far in one step) would be entered in the cube of its size in cells, millions for

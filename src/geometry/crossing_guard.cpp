@@ -37,8 +37,11 @@ CellFrame facing_search_cells(const std::vector<Vec3> &points, double cell)
 std::vector<char> near_facing_sheet(const TriMesh &mesh)
 {
     const int32_t n = mesh.num_vertices();
+    static const DirectionClasses classes(0); // normals more than 90 degrees apart
     std::vector<Vec3> normal(n, Vec3::Zero());
     std::vector<double> reach(n, 0); // the longest edge: how far the vertex's fan reaches
+    std::vector<Box> around(static_cast<size_t>(n));        // the box of its reach
+    std::vector<int16_t> normal_class(static_cast<size_t>(n)); // of its normal
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < n; ++v) {
         mesh.for_each_outgoing(v, [&](int32_t h) {
@@ -46,6 +49,9 @@ std::vector<char> near_facing_sheet(const TriMesh &mesh)
             reach[v] = std::max(reach[v], (mesh.pos[mesh.head(h)] - mesh.pos[v]).squaredNorm());
         });
         reach[v] = std::sqrt(reach[v]);
+        const Vec3 r = Vec3::Constant(reach[v]);
+        around[v] = {mesh.pos[v] - r, mesh.pos[v] + r};
+        normal_class[v] = static_cast<int16_t>(classes.of(normal[v]));
     }
     std::vector<char> marked(n, 0);
     const double mean_reach = ordered_sum(n, 0.0, [&](int32_t v) { return reach[v]; }) / std::max(n, 1);
@@ -58,17 +64,10 @@ std::vector<char> near_facing_sheet(const TriMesh &mesh)
     // this search took 3.4 G of a plain vortex T = 2 run's 63 G instructions, and now 1.7
     // G (cells of four and eight mean reaches: 0.2 and 0.7 G more). Vertices whose
     // position or reach is not a number meet none.
-    static const DirectionClasses classes(0); // normals more than 90 degrees apart
-    std::vector<Box> around(static_cast<size_t>(n));
-    std::vector<int16_t> normal_class(static_cast<size_t>(n));
     std::vector<int32_t> finite;
-    for (int32_t v = 0; v < n; ++v) {
-        const Vec3 r = Vec3::Constant(reach[v]);
-        around[v] = {mesh.pos[v] - r, mesh.pos[v] + r};
-        normal_class[v] = static_cast<int16_t>(classes.of(normal[v]));
+    for (int32_t v = 0; v < n; ++v)
         if (around[v][0].allFinite() && around[v][1].allFinite())
             finite.push_back(v);
-    }
     const std::vector<int32_t> searched =
         finite.empty() ? finite
                        : detail::boxes_near_a_pairing_group(
