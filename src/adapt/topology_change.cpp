@@ -136,9 +136,9 @@ private:
 
 std::vector<MergeCandidate> Surgery::merge_candidates() const
 {
-    // Most overlapping pairs are two edges of one sheet, whose normals cannot face. The
-    // edges are numbered class by class of their normals, so that the grid passes over the
-    // pairs of classes that cannot face unseen (box_pairs.hpp).
+    // Most overlapping pairs are two edges of one sheet, whose normals cannot face: the
+    // search sorts the edges by the classes of their normals and passes over the pairs of
+    // classes that cannot face unseen (box_pairs.hpp).
     static const DirectionClasses classes(facing_cosine);
     const int32_t faces = mesh_.num_triangles();
     std::vector<Vec3> face_normals(static_cast<size_t>(faces));
@@ -147,44 +147,37 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
         if (is_live(mesh_.tri[f]))
             face_normals[f] = unit_normal(pos_, mesh_.tri[f]);
     // Every interior edge once, by its half-edge h > twin, with the class of its normal,
-    // the mean of its triangles'.
+    // the mean of its triangles' (the class of a sum is that of its direction), and its
+    // box grown by d / 2 all round, so that two edges closer than d have overlapping boxes.
     const auto normal_of = [&](int32_t h) {
         return (face_normals[TriMesh::face(h)] + face_normals[TriMesh::face(mesh_.opp[h])]).normalized();
     };
-    std::vector<int32_t> by_half_edge;
-    std::vector<int16_t> class_by_half_edge;
-    by_half_edge.reserve(mesh_.opp.size() / 2);
-    class_by_half_edge.reserve(mesh_.opp.size() / 2);
-    std::vector<int32_t> first_of_class(DirectionClasses::count + 1, 0);
+    std::vector<int32_t> edges;
+    std::vector<int16_t> normal_class;
+    std::vector<Box> boxes;
+    edges.reserve(mesh_.opp.size() / 2);
+    normal_class.reserve(mesh_.opp.size() / 2);
+    boxes.reserve(mesh_.opp.size() / 2);
     double cell = 0;
-    for (int32_t h = 0; h < static_cast<int32_t>(mesh_.opp.size()); ++h) {
-        if (mesh_.opp[h] < 0 || mesh_.opp[h] > h)
-            continue;
-        const int32_t a = mesh_.tail(h), b = mesh_.head(h);
-        const int c = classes.of(normal_of(h));
-        by_half_edge.push_back(h);
-        class_by_half_edge.push_back(static_cast<int16_t>(c));
-        ++first_of_class[static_cast<size_t>(c) + 1];
-        cell += (pos_[b] - pos_[a]).norm() + merge_distance(a, b);
+    for (int32_t f = 0; f < faces; ++f) {
+        const Triangle &t = mesh_.tri[f];
+        for (int k = 0; k < 3; ++k) {
+            const int32_t h = 3 * f + k, twin = mesh_.opp[h];
+            if (twin < 0 || twin > h)
+                continue;
+            const int32_t a = t[k], b = t[k == 2 ? 0 : k + 1];
+            const double d = merge_distance(a, b);
+            const Vec3 grow = Vec3::Constant(0.5 * d);
+            edges.push_back(h);
+            normal_class.push_back(
+                static_cast<int16_t>(classes.of(face_normals[f] + face_normals[TriMesh::face(twin)])));
+            boxes.push_back({pos_[a].cwiseMin(pos_[b]) - grow, pos_[a].cwiseMax(pos_[b]) + grow});
+            cell += (pos_[b] - pos_[a]).norm() + d;
+        }
     }
-    const size_t count = by_half_edge.size();
+    const size_t count = edges.size();
     if (count < 2 || !(cell > 0))
         return {};
-    // Numbered by class (a counting sort), each edge's box grown by d / 2 all round, so
-    // that two edges closer than d have overlapping boxes.
-    for (int c = 0; c < DirectionClasses::count; ++c)
-        first_of_class[static_cast<size_t>(c) + 1] += first_of_class[static_cast<size_t>(c)];
-    std::vector<int32_t> edges(count);
-    std::vector<int16_t> normal_class(count);
-    std::vector<Box> boxes(count);
-    for (size_t e = 0; e < count; ++e) {
-        const int32_t h = by_half_edge[e], a = mesh_.tail(h), b = mesh_.head(h);
-        const size_t k = static_cast<size_t>(first_of_class[static_cast<size_t>(class_by_half_edge[e])]++);
-        const Vec3 grow = Vec3::Constant(0.5 * merge_distance(a, b));
-        edges[k] = h;
-        normal_class[k] = class_by_half_edge[e];
-        boxes[k] = {pos_[a].cwiseMin(pos_[b]) - grow, pos_[a].cwiseMax(pos_[b]) + grow};
-    }
     // Cells of twice the mean box: a box covers about 3 cells instead of 8, and with the
     // pairs of classes that cannot face passed over whole, the grid's entries are what
     // costs (bench_topology's sphere: 92-97 ms a call with cells of two boxes, 115-131 with
@@ -194,9 +187,7 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
     const auto class_of = [&](int32_t s) { return normal_class[s]; };
     const auto may_face = [&](int a, int b) { return classes.may_pair(a, b); };
     for_each_overlapping_pair_across(boxes, DirectionClasses::count, class_of, may_face, cell, [&](int32_t s, int32_t t) {
-        if (edges[s] > edges[t])
-            std::swap(s, t); // h1 < h2 whatever their classes: the same candidates in any numbering
-        const int32_t h1 = edges[s], h2 = edges[t];
+        const int32_t h1 = edges[s], h2 = edges[t]; // h1 < h2: `edges` is in increasing order
         const Vec3 n1 = normal_of(h1), n2 = normal_of(h2);
         if (!(n1.dot(n2) < facing_cosine))
             return;
@@ -267,8 +258,21 @@ std::vector<PinchCandidate> Surgery::pinch_candidates() const
     std::vector<PinchCandidate> all;
     std::vector<int32_t> short_neighbours;
     const auto is_short = [&](int32_t v, int32_t w) { return (pos_[w] - pos_[v]).norm() < merge_distance(v, w); };
+    // A loop's first corner a has two short edges to higher corners: only such vertices
+    // are searched around, found in one pass over the edges (most calls have none).
+    std::vector<uint8_t> short_to_higher(mesh_.pos.size(), 0);
+    for (int32_t f = 0; f < mesh_.num_triangles(); ++f) {
+        const Triangle &t = mesh_.tri[f];
+        for (int k = 0; k < 3; ++k) {
+            const int32_t twin = mesh_.opp[3 * f + k], a = t[k], b = t[k == 2 ? 0 : k + 1];
+            if ((twin < 0 || twin > 3 * f + k) && is_short(a, b)) {
+                uint8_t &count = short_to_higher[std::min(a, b)];
+                count = static_cast<uint8_t>(std::min(count + 1, 2));
+            }
+        }
+    }
     for (int32_t a = 0; a < mesh_.num_vertices(); ++a) {
-        if (mesh_.v2h[a] < 0 || mesh_.is_boundary_vertex(a))
+        if (short_to_higher[a] < 2 || mesh_.v2h[a] < 0 || mesh_.is_boundary_vertex(a))
             continue;
         short_neighbours.clear();
         mesh_.for_each_neighbour(a, [&](int32_t w, int32_t) {

@@ -75,14 +75,15 @@ void pairs_with_large_boxes(const std::vector<Box> &boxes, const BoxesBySize &by
     }
 }
 
-// The boxes of `small` that may overlap a box of a group theirs may pair with, `groups`
-// (at most 128) numbered from 0: each coarse cell, at least `coarse` wide, holds the set of
-// groups of the boxes that cover it, and a box is kept if a cell it covers holds a group
-// that pairs with its own. Two boxes that overlap cover one cell together, so no pair is
-// lost; on a smooth surface, whose normals turn little within a cell, most boxes are left
-// out. The cells are an array over the boxes' bounds, widened where that would hold more
-// than about four cells a box (boxes far apart), which keeps more boxes, not fewer; where
-// the boxes cover more than 64 cells each on average, all are kept.
+// The boxes of `small` (finite boxes) that may overlap a box of a group theirs may pair
+// with, `groups` (at most 128) numbered from 0: each coarse cell, at least `coarse` wide,
+// holds the set of groups of the boxes that cover it, and a box is kept if a cell it
+// covers holds a group that pairs with its own. Two boxes that overlap cover one cell
+// together, so no pair is lost; on a smooth surface, whose normals turn little within a
+// cell, most boxes are left out. The cells are an array over the boxes' bounds, widened
+// where that would hold more than about four cells a box (boxes far apart), which keeps
+// more boxes, not fewer; where the boxes cover more than 64 cells each on average, all
+// are kept.
 template <class Group, class MayPair>
 std::vector<int32_t> boxes_near_a_pairing_group(const std::vector<Box> &boxes, const std::vector<int32_t> &small,
                                                 int groups, Group &&group, MayPair &&may_pair, double coarse)
@@ -98,48 +99,64 @@ std::vector<int32_t> boxes_near_a_pairing_group(const std::vector<Box> &boxes, c
         for (int b = 0; b < groups; ++b)
             if (may_pair(a, b))
                 pairing[static_cast<size_t>(a)].add(b);
-    const Vec3 lowest = lowest_corner(boxes, small);
-    Vec3 highest = boxes[small[0]][1];
-    for (int32_t t : small)
+    Vec3 lowest = boxes[small[0]][0], highest = boxes[small[0]][1];
+    for (int32_t t : small) {
+        lowest = lowest.cwiseMin(boxes[t][0]);
         highest = highest.cwiseMax(boxes[t][1]);
+    }
     const double most_per_axis = std::cbrt(4.0 * static_cast<double>(small.size()));
-    const CellFrame frame{lowest, std::max(coarse, (highest - lowest).maxCoeff() / most_per_axis)};
-    if (!(frame.size > 0 && std::isfinite(frame.size)))
+    const double size = std::max(coarse, (highest - lowest).maxCoeff() / most_per_axis);
+    if (!(size > 0 && std::isfinite(size)))
         return small; // bounds that overflow, or no extent to cut: no cells
-    const GridCell top = frame.cell_of(highest);
-    const int64_t dims[3] = {top[0] + 1, top[1] + 1, top[2] + 1};
+    // A coordinate's cell is its distance from the lowest corner in cells, truncated: the
+    // boxes are finite and at or above that corner, so this is the floor, at most
+    // most_per_axis, and it never decreases as the coordinate grows, so two boxes that
+    // overlap cover one cell together. (CellFrame::cell_of's range checks are not needed
+    // here, and took a third of this search.)
+    const double per_cell = 1 / size;
+    const auto cell_on = [&](const Vec3 &p, int a) { return static_cast<int64_t>((p[a] - lowest[a]) * per_cell); };
+    const int64_t plane = (cell_on(highest, 1) + 1) * (cell_on(highest, 2) + 1), row = cell_on(highest, 2) + 1;
+    struct Span {
+        int64_t first;          // the cell of the lowest corner, numbered in the array
+        int32_t across[3];      // how many more cells the box covers on each axis
+    };
     // Boxes that cover many cells would make this cost more than the search it spares:
     // past 64 cells a box on average, every box is kept.
-    std::vector<std::array<GridCell, 2>> span(small.size());
+    std::vector<Span> span(small.size());
     size_t covered = 0;
     for (size_t m = 0; m < small.size(); ++m) {
-        span[m] = {frame.cell_of(boxes[small[m]][0]), frame.cell_of(boxes[small[m]][1])};
-        covered += static_cast<size_t>((span[m][1][0] - span[m][0][0] + 1) * (span[m][1][1] - span[m][0][1] + 1) *
-                                       (span[m][1][2] - span[m][0][2] + 1));
+        const Box &box = boxes[small[m]];
+        int64_t low[3];
+        for (int a = 0; a < 3; ++a) {
+            low[a] = cell_on(box[0], a);
+            span[m].across[a] = static_cast<int32_t>(cell_on(box[1], a) - low[a]);
+        }
+        span[m].first = low[0] * plane + low[1] * row + low[2];
+        covered += static_cast<size_t>(span[m].across[0] + 1) * static_cast<size_t>(span[m].across[1] + 1) *
+                   static_cast<size_t>(span[m].across[2] + 1);
     }
     if (covered > 64 * small.size())
         return small;
-    std::vector<Groups> held(static_cast<size_t>(dims[0] * dims[1] * dims[2]));
-    const auto at = [&](int64_t i, int64_t j, int64_t k) -> Groups & {
-        return held[static_cast<size_t>((i * dims[1] + j) * dims[2] + k)];
-    };
-    const auto for_each_cell = [&](size_t m, auto &&visit) {
-        const GridCell &low = span[m][0], &high = span[m][1];
-        if (same_cell(low, high)) // most boxes
-            return visit(at(low[0], low[1], low[2]));
-        for (int64_t i = low[0]; i <= high[0]; ++i)
-            for (int64_t j = low[1]; j <= high[1]; ++j)
-                for (int64_t k = low[2]; k <= high[2]; ++k)
-                    visit(at(i, j, k));
+    std::vector<Groups> held(static_cast<size_t>((cell_on(highest, 0) + 1) * plane));
+    const auto for_each_cell = [&](const Span &s, auto &&visit) {
+        Groups *first = &held[static_cast<size_t>(s.first)];
+        if ((s.across[0] | s.across[1] | s.across[2]) == 0) // most boxes
+            return visit(*first);
+        for (int32_t i = 0; i <= s.across[0]; ++i)
+            for (int32_t j = 0; j <= s.across[1]; ++j) {
+                Groups *cells = first + i * plane + j * row;
+                for (int32_t k = 0; k <= s.across[2]; ++k)
+                    visit(cells[k]);
+            }
     };
     for (size_t m = 0; m < small.size(); ++m) {
         const int g = static_cast<int>(group(small[m]));
-        for_each_cell(m, [&](Groups &cell) { cell.add(g); });
+        for_each_cell(span[m], [&](Groups &cell) { cell.add(g); });
     }
     std::vector<int32_t> kept;
     for (size_t m = 0; m < small.size(); ++m) {
         Groups around;
-        for_each_cell(m, [&](const Groups &cell) { around.add(cell); });
+        for_each_cell(span[m], [&](const Groups &cell) { around.add(cell); });
         if (around.meets(pairing[static_cast<size_t>(group(small[m]))]))
             kept.push_back(small[m]);
     }
@@ -189,8 +206,9 @@ void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit
 // `groups` - 1, at most 128), from parallel loops as for_each_overlapping_pair. For
 // searches where most overlapping pairs are of groups that never pair: the boxes far from
 // any box of a group that pairs with theirs are left out (boxes_near_a_pairing_group);
-// the others are numbered group by group, and the boxes of one group in a cell are one
-// run of the cell's entries; two runs whose groups do not pair are passed over whole. An
+// the others are numbered group by group (a counting sort of the few kept), and the boxes
+// of one group in a cell are one run of the cell's entries; two runs whose groups do not
+// pair are passed over whole. An
 // entry is then the box's number and group alone (8 bytes instead of 80: the few pairs
 // compared read their boxes where they are), so that the grid's memory, written anew at
 // each search, is a tenth.
@@ -204,16 +222,23 @@ void for_each_overlapping_pair_across(const std::vector<Box> &boxes, int groups,
     // bench_topology's sphere, where no two edges face, a fifth fewer instructions and
     // 86-89 ms a call instead of 107-123. Coarse cells of four grid cells (two: 1 % more
     // instructions there; eight: the same).
-    const std::vector<int32_t> small =
+    const std::vector<int32_t> near =
         by_size.small.size() < 2
             ? by_size.small
-            : detail::boxes_near_a_pairing_group(boxes, by_size.small, groups, group, may_pair, 4 * cell);
-    if (small.size() >= 2) {
+            : detail::boxes_near_a_pairing_group(boxes, by_size.small, groups, group, may_pair, cell);
+    if (near.size() >= 2) {
+        std::vector<int32_t> small(near.size()), first_of_group(static_cast<size_t>(groups) + 1, 0);
+        for (int32_t s : near)
+            ++first_of_group[static_cast<size_t>(group(s)) + 1];
+        for (size_t g = 1; g <= static_cast<size_t>(groups); ++g)
+            first_of_group[g] += first_of_group[g - 1];
+        for (int32_t s : near)
+            small[static_cast<size_t>(first_of_group[static_cast<size_t>(group(s))]++)] = s;
         struct Entry {
             int32_t thing; // in `small`
             int32_t group;
         };
-        SpatialGrid<Entry> grid; // entries in increasing order of thing, and so of box
+        SpatialGrid<Entry> grid; // entries in increasing order of thing, and so group by group
         grid.build(CellFrame{detail::lowest_corner(boxes, small), cell}, static_cast<int32_t>(small.size()),
                    [&](int32_t m) { return boxes[small[m]]; },
                    [&](int32_t m, const GridCell &) { return Entry{m, static_cast<int32_t>(group(small[m]))}; });
@@ -228,7 +253,7 @@ void for_each_overlapping_pair_across(const std::vector<Box> &boxes, int groups,
                     // Each pair once: in the first cell both boxes cover.
                     if (cell_key(first_shared_cell(grid.cells_of(m.thing)[0], grid.cells_of(k.thing)[0])) == here &&
                         boxes_overlap(boxes[s], boxes[t]))
-                        visit(s, t);
+                        visit(std::min(s, t), std::max(s, t));
                 });
     }
     detail::pairs_with_large_boxes(

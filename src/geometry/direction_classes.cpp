@@ -14,11 +14,15 @@ namespace {
 // the next. Widening every class by this angle covers that.
 constexpr double margin = radians_per_degree;
 
-// The square of a coordinate u in [-1, 1] of the central projection; NaN in the first.
-int square_of(double u)
+// The square of the central projection's coordinate u / largest (in [-1, 1]), counted
+// by comparisons, not divisions (this runs for every edge of each merge search and every
+// vertex of each crossing guard); NaN in the first, a zero vector in the last.
+int square_of(double u, double largest)
 {
-    const double x = (u + 1) / 2 * DirectionClasses::divisions;
-    return x >= DirectionClasses::divisions - 1 ? DirectionClasses::divisions - 1 : x >= 1 ? static_cast<int>(x) : 0;
+    int square = 0;
+    for (int i = 1; i < DirectionClasses::divisions; ++i)
+        square += u >= (-1 + 2.0 * i / DirectionClasses::divisions) * largest;
+    return square;
 }
 
 // The direction of the central projection's point (u, v) on face (axis, sign).
@@ -62,12 +66,12 @@ DirectionClasses::DirectionClasses(double cosine) : may_pair_(static_cast<size_t
 
 int DirectionClasses::of(const Vec3 &n) const
 {
-    int axis = 0;
-    n.cwiseAbs().maxCoeff(&axis);
+    const double x = std::abs(n[0]), y = std::abs(n[1]), z = std::abs(n[2]);
+    const int axis = x >= y ? (x >= z ? 0 : 2) : (y >= z ? 1 : 2); // the first largest
     const double largest = std::abs(n[axis]);
     const int face = 2 * axis + (n[axis] < 0);
-    return (face * divisions + square_of(n[(axis + 1) % 3] / largest)) * divisions +
-           square_of(n[(axis + 2) % 3] / largest);
+    return (face * divisions + square_of(n[(axis + 1) % 3], largest)) * divisions +
+           square_of(n[(axis + 2) % 3], largest);
 }
 
 } // namespace sfa

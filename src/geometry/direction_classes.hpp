@@ -24,8 +24,8 @@ public:
     // Classes for pairs of directions whose dot product is below `cosine`.
     explicit DirectionClasses(double cosine);
 
-    // The class of a unit vector; any class for a zero or NaN one (whose dot product with
-    // anything is below no cosine).
+    // The class of a vector's direction (its length does not matter); any class for a zero
+    // or NaN one (whose dot product with anything is below no cosine).
     int of(const Vec3 &n) const;
     // False where every direction of class a and every one of class b have a dot product of
     // at least the cosine (within a degree's margin, for rounding at the squares' edges).

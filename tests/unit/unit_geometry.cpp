@@ -186,7 +186,8 @@ void quadric_error_minimum_stays_within_its_shift(void **)
 // The search for facing sheets passes over two edges whose normals' classes cannot pair:
 // no two directions nearly opposite may ever be in such classes, on a cube's edges and
 // corners (where a direction's class is decided by rounding) as anywhere; and two
-// directions of one smooth sheet, 30 degrees apart, are never compared.
+// directions of one smooth sheet, 30 degrees apart, are never compared. The searches pass
+// vectors of any length (the sum of two triangles' unit normals): the same holds for them.
 void direction_classes_part_no_facing_directions(void **)
 {
     const double cosine = -0.5;
@@ -204,7 +205,8 @@ void direction_classes_part_no_facing_directions(void **)
     int facing = 0;
     for (int k = 0; k < 200000; ++k) {
         const Vec3 a = random_direction(), b = random_direction();
-        const int ca = classes.of(a), cb = classes.of(b);
+        const auto any_length = [&](const Vec3 &n) { return (std::exp(numbers.uniform(-7, 7)) * n).eval(); };
+        const int ca = classes.of(any_length(a)), cb = classes.of(any_length(b));
         assert_true(ca >= 0 && ca < DirectionClasses::count && cb >= 0 && cb < DirectionClasses::count);
         if (a.dot(b) < cosine) {
             ++facing;
@@ -213,7 +215,7 @@ void direction_classes_part_no_facing_directions(void **)
         // b turned 30 degrees from a, about a direction across it.
         const Vec3 across = a.cross(numbers.point(1)).normalized();
         const Vec3 near = Eigen::AngleAxisd(pi / 6, across) * a;
-        assert_false(classes.may_pair(ca, classes.of(near)));
+        assert_false(classes.may_pair(ca, classes.of(any_length(near))));
     }
     assert_true(facing > 10000);
     const double nan = std::numeric_limits<double>::quiet_NaN();
