@@ -158,6 +158,8 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
     edges.reserve(mesh_.opp.size() / 2);
     normal_class.reserve(mesh_.opp.size() / 2);
     boxes.reserve(mesh_.opp.size() / 2);
+    const bool uniform = data_.size.empty();
+    const double uniform_distance = ratio_ * 0.5 * (l_ + l_); // merge_distance's, without a size field
     double cell = 0;
     for (int32_t f = 0; f < faces; ++f) {
         const Triangle &t = mesh_.tri[f];
@@ -166,7 +168,7 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
             if (twin < 0 || twin > h)
                 continue;
             const int32_t a = t[k], b = t[k == 2 ? 0 : k + 1];
-            const double d = merge_distance(a, b);
+            const double d = uniform ? uniform_distance : merge_distance(a, b);
             const Vec3 grow = Vec3::Constant(0.5 * d);
             edges.push_back(h);
             normal_class.push_back(
@@ -361,15 +363,21 @@ bool Surgery::apply(const PinchPlan &plan)
 
 void Surgery::remove_tiny_drops(const Components &components)
 {
+    // A drop is tiny where its box is narrower than tiny_drop times its corners' mean merge
+    // distance, which is at most ratio_ times the longest length: a box wider than twice
+    // that (room for the mean's rounding) is not, and the rest of its corners are not read
+    // (a bubble of the whole surface costs a few hundred of them, not all).
+    const double longest = data_.size.empty() ? l_ : *std::max_element(data_.size.begin(), data_.size.end());
+    const double surely_wide = 2 * tiny_drop * ratio_ * longest;
     for (int32_t c = 0; c < components.count; ++c) {
         if (!components.closed[c])
             continue;
         Vec3 lowest = Vec3::Constant(std::numeric_limits<double>::infinity()), highest = -lowest;
         double distance = 0;
         int32_t corners = 0;
-        bool pinned = false;
+        bool pinned = false, wide = false;
         const int32_t first = components.triangle_start[c], last = components.triangle_start[c + 1];
-        for (int32_t k = first; k < last; ++k)
+        for (int32_t k = first; k < last && !wide; ++k) {
             for (int32_t v : tri_[components.triangles[k]]) {
                 lowest = lowest.cwiseMin(pos_[v]);
                 highest = highest.cwiseMax(pos_[v]);
@@ -377,7 +385,10 @@ void Surgery::remove_tiny_drops(const Components &components)
                 ++corners;
                 pinned = pinned || used_[v];
             }
-        if (pinned || !((highest - lowest).norm() < tiny_drop * distance / corners))
+            if ((k - first) % 64 == 63)
+                wide = (highest - lowest).norm() >= surely_wide;
+        }
+        if (wide || pinned || !((highest - lowest).norm() < tiny_drop * distance / corners))
             continue;
         Event event{Event::Kind::removal};
         event.centre = 0.5 * (lowest + highest);

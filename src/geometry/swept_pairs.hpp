@@ -270,11 +270,15 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
     }
     const auto block_start = [&](int32_t b) { return part_start[8 * static_cast<size_t>(b)]; };
 
-    // Each block's frame (its triangles' mean displacement), the union of its triangles'
-    // boxes swept in it, and the union swept at rest, which finds the blocks near it; and
-    // for each of its parts what bounds its triangles' boxes in any other frame: a swept
-    // triangle whose boxes are the unions of theirs and whose scale is the largest (its
-    // corners unused).
+    // Each block's frame (its triangles' mean displacement); for each of its parts what
+    // bounds its triangles' boxes in any frame: a swept triangle whose boxes are the unions
+    // of theirs and whose scale is the largest (its corners unused; each of the triangles'
+    // boxes swept in a frame lies in its box swept in that frame: swept_in_frame's sums,
+    // each term no larger, the rounding no smaller); and, from these, the block's reach (a
+    // box holding its triangles' boxes swept in its frame) and its box at rest, which finds
+    // the blocks near it. (Each triangle's own boxes, swept twice more for these, took 1.2
+    // G of collision-safe vortex T = 2's 78.7 G instructions; the parts' bounds are nearly
+    // as tight: as many guests.)
     std::vector<Vec3> frame(static_cast<size_t>(blocks));
     std::vector<Box> reach(static_cast<size_t>(blocks)), at_rest(static_cast<size_t>(blocks));
     std::vector<SweptTriangle> around(8 * static_cast<size_t>(blocks));
@@ -297,12 +301,14 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
                 if (!(t.start[0].allFinite() && t.start[1].allFinite() && t.motion[0].allFinite() &&
                       t.motion[1].allFinite()))
                     continue;
-                widen(reach[b], swept_in_frame(t, frame[b]));
-                widen(at_rest[b], swept_in_frame(t, Vec3::Zero()));
                 widen(around[p].start, t.start);
                 widen(around[p].motion, t.motion);
                 around[p].scale = std::max(around[p].scale, t.scale);
             }
+            if (std::isnan(around[p].start[0][0]))
+                continue; // no triangle with numbers
+            widen(reach[b], swept_in_frame(around[p], frame[b]));
+            widen(at_rest[b], swept_in_frame(around[p], Vec3::Zero()));
         }
     }
     // Two triangles that can meet have overlapping boxes at rest, so their blocks have too.

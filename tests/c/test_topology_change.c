@@ -259,6 +259,29 @@ static void drops_a_pinch_cuts_off_below_resolution_go_at_once(void **state)
     sfa_destroy(s);
 }
 
+/* A drop far below what the mesh resolves goes at the start of the call, however finely it
+ * is meshed itself, and the bubble beside it stays. The search for such drops stops reading
+ * a component's corners once its box is surely too wide (after a first 64 triangles, then
+ * every 64): the drop's 320 must all be read, the bubble's need not. */
+static void a_finely_meshed_tiny_drop_is_removed(void **state)
+{
+    (void)state;
+    sfa_mesh_data m = shape_icosphere(3, 0.3), drop = shape_icosphere(2, 0.004);
+    const double aside[3] = {0.5, 0, 0};
+    mesh_translate(&drop, aside);
+    mesh_append(&m, &drop);
+    mesh_free(&drop);
+    sfa_surface *s = make_surface(&m, 0);
+    mesh_free(&m);
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, 0.05));
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_TOPOLOGY_CHANGE, 1));
+    assert_ok(s, sfa_adapt(s));
+    assert_int_equal((int)measure(s, SFA_MEASURE_DROPS_REMOVED), 1);
+    assert_int_equal(components(s), 1);
+    assert_all_closed(s);
+    sfa_destroy(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -266,6 +289,7 @@ int main(void)
         cmocka_unit_test(fixed_vertices_never_merge),
         cmocka_unit_test(squeezed_waist_pinches_off),
         cmocka_unit_test(drops_a_pinch_cuts_off_below_resolution_go_at_once),
+        cmocka_unit_test(a_finely_meshed_tiny_drop_is_removed),
     };
     return cmocka_run_group_tests_name("test_topology_change", tests, NULL, NULL);
 }

@@ -34,16 +34,23 @@ struct Moving {
     Vec3 at(int32_t t, int k, double time) const { return x[3 * t + k] + time * d[3 * t + k]; }
 };
 
-// A square sheet of n x n cells, two triangles each, at height z, corners jittered.
-void add_sheet(Moving &m, int n, double z, Numbers &rng)
+// A sheet of n x n cells, two triangles each, from `corner` along `across` and `up` (the
+// whole sheet's sides), corners jittered.
+void add_patch(Moving &m, int n, const Vec3 &corner, const Vec3 &across, const Vec3 &up, Numbers &rng)
 {
-    const double h = 1.0 / n;
+    const Vec3 u = across / n, v = up / n;
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
-            const Vec3 a(i * h, j * h, z), b = a + Vec3(h, 0, 0), c = a + Vec3(0, h, 0), e = a + Vec3(h, h, 0);
+            const Vec3 a = corner + i * u + j * v, b = a + u, c = a + v, e = a + u + v;
             for (const Vec3 &p : {a, b, e, a, e, c})
-                m.x.push_back(p + 0.05 * h * rng.point(1));
+                m.x.push_back(p + 0.05 * u.norm() * rng.point(1));
         }
+}
+
+// A unit square sheet of n x n cells at height z.
+void add_sheet(Moving &m, int n, double z, Numbers &rng)
+{
+    add_patch(m, n, Vec3(0, 0, z), Vec3(1, 0, 0), Vec3(0, 1, 0), rng);
 }
 
 std::vector<SweptTriangle> swept(const Moving &m)
@@ -105,6 +112,23 @@ Moving crossing_sheets(Numbers &rng)
     return m;
 }
 
+// Fails unless every two triangles that meet during the step are visited; how many meet.
+int check_meeting_pairs_are_visited(const Moving &m)
+{
+    const auto pairs = visited_pairs(m);
+    int meeting = 0;
+    const std::vector<SweptTriangle> boxes = swept(m);
+    for (int32_t s = 0; s < m.count(); ++s)
+        for (int32_t t = s + 1; t < m.count(); ++t)
+            if (boxes_overlap(swept_in_frame(boxes[s], Vec3::Zero()), swept_in_frame(boxes[t], Vec3::Zero())) &&
+                meet_during_step(m, s, t)) {
+                ++meeting;
+                if (!pairs.count({s, t}))
+                    fail_msg("triangles %d and %d meet during the step but were not visited", s, t);
+            }
+    return meeting;
+}
+
 void every_pair_that_meets_is_visited_once(void **)
 {
     Numbers rng{5};
@@ -125,6 +149,40 @@ void every_pair_that_meets_is_visited_once(void **)
         print_message("%d threads: %d pairs meet, %zu visited\n", threads, meeting, pairs.size());
         assert_true(meeting > 500);
     }
+}
+
+// Two sheets whose blocks are far apart at rest: a vertical one rushes through a resting
+// horizontal one, three blocks (36 cells) in a step. The blocks near each other are found
+// by the boxes they sweep at rest, which must hold the motion.
+void sheets_that_rush_through_each_other_from_far_are_compared(void **)
+{
+    Numbers rng{11};
+    Moving m;
+    add_sheet(m, 10, 0, rng);
+    m.d.assign(m.x.size(), Vec3::Zero());
+    add_patch(m, 10, Vec3(3.5, 0, -0.5), Vec3(0, 1, 0), Vec3(0, 0, 1), rng);
+    m.d.resize(m.x.size(), Vec3(-4.3, 0, 0));
+    const int meeting = check_meeting_pairs_are_visited(m);
+    print_message("%d pairs meet\n", meeting);
+    assert_true(meeting > 50);
+}
+
+// A sheet whose halves move apart, one up and one down, as fast as a block is tall: in its
+// block's frame (their mean motion, about none) its triangles sweep far, and the sheet
+// above, in the next block, which the rising half passes through, is compared with them
+// there. What a block's triangles reach in its frame must hold their motion in it.
+void a_block_is_compared_with_all_its_triangles_reach_in_its_frame(void **)
+{
+    Numbers rng{13};
+    Moving m;
+    add_sheet(m, 10, 0, rng); // first, so that its block is the first and its frame the one used
+    for (const Vec3 &p : m.x)
+        m.d.push_back(Vec3(0, 0, p[1] < 0.5 ? 1.6 : -1.6));
+    add_patch(m, 10, Vec3(0, 0, 1.3), Vec3(1, 0, 0), Vec3(0, 0.5, 0), rng);
+    m.d.resize(m.x.size(), Vec3::Zero());
+    const int meeting = check_meeting_pairs_are_visited(m);
+    print_message("%d pairs meet\n", meeting);
+    assert_true(meeting > 50);
 }
 
 // The same sheet moving as one, ten cells in a step: at rest each box is swept over ten
@@ -316,6 +374,8 @@ int main()
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(every_pair_that_meets_is_visited_once),
+        cmocka_unit_test(sheets_that_rush_through_each_other_from_far_are_compared),
+        cmocka_unit_test(a_block_is_compared_with_all_its_triangles_reach_in_its_frame),
         cmocka_unit_test(a_surface_moving_as_one_visits_its_neighbours_only),
         cmocka_unit_test(neighbours_are_not_visited),
         cmocka_unit_test(boxes_that_touch_far_from_the_origin_are_visited),
