@@ -149,9 +149,6 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
     // Every interior edge once, by its half-edge h > twin, with the class of its normal,
     // the mean of its triangles' (the class of a sum is that of its direction), and its
     // box grown by d / 2 all round, so that two edges closer than d have overlapping boxes.
-    const auto normal_of = [&](int32_t h) {
-        return (face_normals[TriMesh::face(h)] + face_normals[TriMesh::face(mesh_.opp[h])]).normalized();
-    };
     std::vector<int32_t> edges;
     std::vector<int16_t> normal_class;
     std::vector<Box> boxes;
@@ -186,6 +183,9 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
     // one, 90-93 with three, 115-127 with six).
     cell = 2 * cell / static_cast<double>(count);
     std::vector<std::vector<MergeCandidate>> found(static_cast<size_t>(loop_threads()));
+    const auto normal_of = [&](int32_t h) {
+        return (face_normals[TriMesh::face(h)] + face_normals[TriMesh::face(mesh_.opp[h])]).normalized();
+    };
     const auto class_of = [&](int32_t s) { return normal_class[s]; };
     const auto may_face = [&](int a, int b) { return classes.may_pair(a, b); };
     for_each_overlapping_pair_across(boxes, DirectionClasses::count, class_of, may_face, cell, [&](int32_t s, int32_t t) {
