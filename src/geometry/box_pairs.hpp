@@ -117,8 +117,8 @@ std::vector<int32_t> boxes_near_a_pairing_group(const std::vector<Box> &boxes, c
     const auto cell_on = [&](const Vec3 &p, int a) { return static_cast<int64_t>((p[a] - lowest[a]) * per_cell); };
     const int64_t plane = (cell_on(highest, 1) + 1) * (cell_on(highest, 2) + 1), row = cell_on(highest, 2) + 1;
     struct Span {
-        int64_t first;          // the cell of the lowest corner, numbered in the array
-        int32_t across[3];      // how many more cells the box covers on each axis
+        int64_t first;     // the cell of the lowest corner, numbered in the array
+        int32_t across[3]; // how many more cells the box covers on each axis
     };
     // Boxes that cover many cells would make this cost more than the search it spares:
     // past 64 cells a box on average, every box is kept.
@@ -208,10 +208,9 @@ void for_each_overlapping_pair(const std::vector<Box> &boxes, double cell, Visit
 // any box of a group that pairs with theirs are left out (boxes_near_a_pairing_group);
 // the others are numbered group by group (a counting sort of the few kept), and the boxes
 // of one group in a cell are one run of the cell's entries; two runs whose groups do not
-// pair are passed over whole. An
-// entry is then the box's number and group alone (8 bytes instead of 80: the few pairs
-// compared read their boxes where they are), so that the grid's memory, written anew at
-// each search, is a tenth.
+// pair are passed over whole. An entry is then the box's number and group alone (8 bytes
+// instead of 80: the few pairs compared read their boxes where they are), so that the
+// grid's memory, written anew at each search, is a tenth.
 template <class Group, class MayPair, class Visit>
 void for_each_overlapping_pair_across(const std::vector<Box> &boxes, int groups, Group &&group, MayPair &&may_pair,
                                       double cell, Visit &&visit,
