@@ -392,6 +392,27 @@ void pairs_across_groups_are_the_overlapping_pairs_of_groups_that_may_pair(void 
     }
 }
 
+// The grid's cells are made from the kept boxes' sizes: among many tiny boxes, a few as
+// wide as nine callers' cells (not large to the caller) must still be in the grid's cells,
+// not left out of them as too large.
+void pairs_across_groups_among_boxes_of_very_different_sizes(void **)
+{
+    std::vector<Box> boxes = random_boxes(500, 1.0, 0.004, 21);
+    for (const Box &wide : random_boxes(20, 1.0, 0.9, 22))
+        boxes.push_back(wide);
+    const auto may_pair = [](int32_t a, int32_t b) { return a != b && (a + b) % 3 != 0; };
+    const auto group = [](int32_t s) { return s % 6; };
+    Pairs expected;
+    for (const auto &[s, t] : all_pairs(boxes))
+        if (may_pair(group(s), group(t)))
+            expected.push_back({s, t});
+    assert_true(expected.size() > 100);
+    assert_same_pairs(pairs_reported([&](auto visit) {
+                          for_each_overlapping_pair_across(boxes, 6, group, may_pair, 0.1, visit);
+                      }),
+                      expected);
+}
+
 // The grid of the merge search holds only the boxes near a box of a group that pairs
 // with theirs: two groups on either side of x = 0.5, pairing only with each other; boxes
 // farther from it than two coarse cells are left out, and every box that overlaps one of
@@ -433,6 +454,7 @@ int main()
         cmocka_unit_test(cells_of_non_finite_or_far_points_are_clamped),
         cmocka_unit_test(pairs_with_a_subset_are_all_pairs_with_one_of_it),
         cmocka_unit_test(pairs_across_groups_are_the_overlapping_pairs_of_groups_that_may_pair),
+        cmocka_unit_test(pairs_across_groups_among_boxes_of_very_different_sizes),
         cmocka_unit_test(boxes_far_from_a_pairing_group_are_left_out),
     };
     return cmocka_run_group_tests_name("unit_spatial_grid", tests, nullptr, nullptr);
