@@ -38,18 +38,34 @@ void decomposition_recovers_near_degenerate_spectra(void **)
     const Mat3 rotation = some_rotation();
     // Flat (lambda2 = lambda3 ~ 0), cylinder-like (lambda3 << lambda2 << lambda1), and a
     // nearly repeated pair (lambda2 ~ lambda3), where the closed form loses accuracy.
-    const Eigen::Vector3d spectra[] = {{1, 1e-17, 0}, {1, 1e-2, 1e-15}, {1, 1e-3, 1e-3 * (1 - 1e-9)}, {2, 1, 1e-6}};
-    for (const Eigen::Vector3d &lambda : spectra) {
-        const Mat3 a = rotation * lambda.asDiagonal() * rotation.transpose();
-        const QuadricEigen eigen = decompose(a);
-        for (int i = 0; i < 3; ++i)
-            assert_true(std::abs(eigen.values[i] - lambda[i]) <= 1e-14);
-        assert_true(eigen.values[0] >= eigen.values[1] && eigen.values[1] >= eigen.values[2]);
-        // e1 is always well separated here: it must match the rotated x axis.
-        assert_true(std::abs(std::abs(eigen.e(0).dot(rotation.col(0))) - 1) < 1e-12);
-        // Every returned pair is an eigenpair of A to round-off.
-        assert_true((a * eigen.vectors - eigen.vectors * eigen.values.asDiagonal()).norm() < 1e-13);
-    }
+    // Then spectra where lambda1 is not well separated (a ridge, a corner), which the
+    // smooth vertices' method leaves to the general one, and the same at any magnitude.
+    const Eigen::Vector3d spectra[] = {{1, 1e-17, 0},       {1, 1e-2, 1e-15},       {1, 1e-3, 1e-3 * (1 - 1e-9)},
+                                       {2, 1, 1e-6},        {1, 1 - 1e-9, 0.2},     {1, 1 - 1e-4, 1e-3},
+                                       {1, 0.999, 0.998},   {1, 0.5, 0.5 - 1e-12}, {1, 0, 0}};
+    for (const double magnitude : {1.0, 1e-200, 1e200})
+        for (const Eigen::Vector3d &unit_lambda : spectra) {
+            const Eigen::Vector3d lambda = magnitude * unit_lambda;
+            const Mat3 a = rotation * lambda.asDiagonal() * rotation.transpose();
+            const QuadricEigen eigen = decompose(a);
+            for (int i = 0; i < 3; ++i)
+                assert_true(std::abs(eigen.values[i] - lambda[i]) <= 1e-12 * magnitude);
+            assert_true(eigen.values[0] >= eigen.values[1] && eigen.values[1] >= eigen.values[2]);
+            // Where e1 is well separated it must match the rotated x axis.
+            if (unit_lambda[0] - unit_lambda[1] > 1e-3)
+                assert_true(std::abs(std::abs(eigen.e(0).dot(rotation.col(0))) - 1) < 1e-12);
+            // Every returned pair is an eigenpair of A to round-off, the vectors orthonormal
+            // (Eigen's closed form, for the spectra not a smooth vertex's, errs by 2e-13
+            // where two eigenvalues are 1e-4 apart).
+            assert_true(((a * eigen.vectors - eigen.vectors * eigen.values.asDiagonal()) / magnitude).norm() < 1e-12);
+            assert_true((eigen.vectors.transpose() * eigen.vectors - Mat3::Identity()).norm() < 1e-13);
+        }
+    // Equal eigenvalues (a cube's corner): any orthonormal frame.
+    const QuadricEigen corner = decompose(Mat3::Identity());
+    assert_true((corner.values - Eigen::Vector3d::Ones()).norm() < 1e-15);
+    assert_true((corner.vectors.transpose() * corner.vectors - Mat3::Identity()).norm() < 1e-15);
+    // No face: all zero.
+    assert_true(decompose(Mat3::Zero()).values.norm() == 0);
 }
 
 QuadricEigen eigen_of(const Eigen::Vector3d &values, const Mat3 &vectors) { return QuadricEigen{values, vectors}; }
