@@ -68,12 +68,14 @@ QuadricEigen decompose_by_eigen(const Mat3 &quadric)
     return out;
 }
 
-// The largest eigenvalue of symmetric positive semi-definite b by Newton's method on its
+// The largest eigenvalue of symmetric positive semi-definite b by Halley's method on its
 // characteristic polynomial f(x) = det(x I - b), from b's Frobenius norm, which is no
-// smaller: f is convex and increasing beyond the largest root, so the steps fall towards
-// it without passing it (until round-off). At a smooth vertex the norm is within about
-// (lambda2 / lambda1)^2 of it, and three steps settle it. False if `iterations` steps leave
-// it unsettled (a largest eigenvalue nearly repeated, where the convergence is linear).
+// smaller. At a smooth vertex the norm is within about (lambda2 / lambda1)^2 of it, and
+// one step, whose error is about the cube of the last, settles it: a step below 1e-6 x
+// leaves less than round-off. (Newton's method took three or four steps, each a division
+// the next one waits for.) False if `iterations` steps leave it unsettled (a largest
+// eigenvalue nearly repeated, where the convergence is slow). The caller checks that the
+// root found is the largest.
 bool largest_eigenvalue(const Mat3 &b, double &x)
 {
     constexpr int iterations = 8;
@@ -83,11 +85,13 @@ bool largest_eigenvalue(const Mat3 &b, double &x)
     const double c0 = b00 * (b11 * b22 - b12 * b12) - b01 * (b01 * b22 - b12 * b02) + b02 * (b01 * b12 - b11 * b02);
     x = b.norm();
     for (int k = 0; k < iterations; ++k) {
-        const double f = ((x - c2) * x + c1) * x - c0, slope = (3 * x - 2 * c2) * x + c1;
-        const double step = f / slope;
-        if (!(step > 4e-16 * x))
-            return std::isfinite(x); // settled: within round-off of the root, or at it
+        const double f = ((x - c2) * x + c1) * x - c0, slope = (3 * x - 2 * c2) * x + c1, bend = 6 * x - 2 * c2;
+        const double step = 2 * f * slope / (2 * slope * slope - f * bend);
+        if (!std::isfinite(step))
+            return false;
         x -= step;
+        if (std::abs(step) <= 1e-6 * x)
+            return true;
     }
     return false;
 }
@@ -99,14 +103,13 @@ QuadricEigen decompose(const Mat3 &quadric)
     // A smooth vertex's quadric has one eigenvalue far above the other two (its normal's,
     // §2.2), which may nearly coincide (a sphere's umbilic points). So the largest is found
     // first (largest_eigenvalue); its eigenvector is the cross product of two rows of
-    // A - lambda1 I (the largest of the three such products), and the other two come from
-    // one Jacobi rotation of A restricted to the plane normal to it (Golub and Van Loan,
-    // Matrix Computations, §8.5), exact to round-off of |A| however near lambda2 and
-    // lambda3 are. Eigen's closed form takes an arc tangent, a sine and a cosine, and its
-    // residuals must be checked wherever two roots come near, which at a smooth vertex
-    // they always do: on vortex T = 2 the decompositions took 7.6 G instructions that way
-    // and take 4.8 G this way. Where the largest eigenvalue is not well separated (a ridge,
-    // a corner), Eigen's solvers decide.
+    // A - lambda1 I (the largest of the three such products), and the other two are those
+    // of A restricted to the plane normal to it, a 2 x 2 problem solved in closed form to
+    // round-off of |A| however near lambda2 and lambda3 are. Eigen's closed form takes an
+    // arc tangent, a sine and a cosine, and its residuals must be checked wherever two
+    // roots come near, which at a smooth vertex they always do: on vortex T = 2 the
+    // decompositions took 7.6 G instructions that way and take 3.6 G this way. Where the
+    // largest eigenvalue is not well separated (a ridge, a corner), Eigen's solvers decide.
     // b = A / scale, scale the power of two above A's largest entry (exact): no cube in f
     // overflows or underflows. (Eigen's closed form, too, loses accuracy at 1e-200.) A zero
     // or extreme A, or one with an entry not a number, goes to Eigen's solvers whole.
@@ -148,24 +151,28 @@ QuadricEigen decompose(const Mat3 &quadric)
                                                                          : Vec3(e1[1], -e1[0], 0);
     u *= 1 / u.norm();
     const Vec3 w = e1.cross(u);
-    const Vec3 bu = b * u, bw = b * w;
+    const auto times_b = [&b](const Vec3 &x) { // b x (Eigen's product was a call)
+        return Vec3(b(0, 0) * x[0] + b(0, 1) * x[1] + b(0, 2) * x[2], b(1, 0) * x[0] + b(1, 1) * x[1] + b(1, 2) * x[2],
+                    b(2, 0) * x[0] + b(2, 1) * x[1] + b(2, 2) * x[2]);
+    };
+    const Vec3 bu = times_b(u), bw = times_b(w);
     const double p = u.dot(bu), q = u.dot(bw), r = w.dot(bw);
-    // The rotation (c, s) that makes [p q; q r] diagonal: t = tan of its angle, the smaller
-    // root of t^2 + 2 zeta t - 1 = 0.
-    double t = 0;
-    if (q != 0) {
-        const double zeta = (r - p) / (2 * q);
-        t = (zeta >= 0 ? 1.0 : -1.0) / (std::abs(zeta) + std::sqrt(1 + zeta * zeta));
+    // [p q; q r]'s eigenvalues are mean +- radius; the larger's vector in (u, w) comes from
+    // whichever of its two forms adds rather than cancels.
+    const double half = (p - r) / 2, radius = std::sqrt(half * half + q * q), mean = (p + r) / 2;
+    double along_u = half >= 0 ? half + radius : q, along_w = half >= 0 ? q : radius - half;
+    if (const double length = std::sqrt(along_u * along_u + along_w * along_w); length > 0) {
+        along_u /= length;
+        along_w /= length;
+    } else { // p = r and q = 0: any pair
+        along_u = 1;
+        along_w = 0;
     }
-    const double c = 1 / std::sqrt(1 + t * t), s = t * c;
-    double mu[2] = {p - t * q, r + t * q};
-    Vec3 v[2] = {c * u - s * w, s * u + c * w};
-    if (mu[1] > mu[0]) {
-        std::swap(mu[0], mu[1]);
-        std::swap(v[0], v[1]);
-    }
-    const double rayleigh = e1.dot(b * e1);
-    // e1's error is round-off over its gap to the others: below 1e-12 for a gap of 1e-3.
+    const double mu[2] = {mean + radius, mean - radius};
+    const Vec3 v[2] = {along_u * u + along_w * w, along_u * w - along_w * u};
+    const double rayleigh = e1.dot(times_b(e1));
+    // The root found is the largest, and e1's error (round-off over its gap to the others)
+    // below 1e-12 for a gap of 1e-3.
     if (!(rayleigh - mu[0] > 1e-3 * rayleigh))
         return by_eigen();
     QuadricEigen out;
