@@ -141,8 +141,11 @@ ComponentOffsets component_offsets(const TriMesh &mesh, const std::vector<char> 
             const Vec3 &o = about[label[t[0]]];
             const Vec3 p0 = mesh.pos[t[0]] - o, p1 = mesh.pos[t[1]] - o, p2 = mesh.pos[t[2]] - o;
             const Vec3 &n0 = normal[t[0]], &n1 = normal[t[1]], &n2 = normal[t[2]];
-            return Eigen::Vector4d(det(p0, p1, p2), det(n0, p1, p2) + det(p0, n1, p2) + det(p0, p1, n2),
-                                   det(p0, n1, n2) + det(n0, p1, n2) + det(n0, n1, p2), det(n0, n1, n2));
+            // The eight determinants from four cross products: with m = n1 x p2 + p1 x n2,
+            // det(n0, p1, p2) + det(p0, n1, p2) + det(p0, p1, n2) = n0 . (p1 x p2) + p0 . m
+            // and det(p0, n1, n2) + det(n0, p1, n2) + det(n0, n1, p2) = p0 . (n1 x n2) + n0 . m.
+            const Vec3 pp = p1.cross(p2), nn = n1.cross(n2), m = n1.cross(p2) + p1.cross(n2);
+            return Eigen::Vector4d(p0.dot(pp), n0.dot(pp) + p0.dot(m), p0.dot(nn) + n0.dot(m), n0.dot(nn));
         });
     for (int32_t c = 0; c < count; ++c) {
         if (!closed[c])
