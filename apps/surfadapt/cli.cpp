@@ -22,6 +22,11 @@ int fail(sfa_surface *s, const char *what)
 
 bool ensure_directory(const std::string &path)
 {
+    // Each missing parent first, as mkdir -p does (bench/bench_flows.sh's checkpoints go
+    // two levels below build/).
+    for (size_t slash = path.find('/', 1); slash != std::string::npos; slash = path.find('/', slash + 1))
+        if (mkdir(path.substr(0, slash).c_str(), 0777) != 0 && errno != EEXIST)
+            return false;
     return mkdir(path.c_str(), 0777) == 0 || errno == EEXIST;
 }
 

@@ -13,7 +13,7 @@ extern const char *const usage;
 // Prints "surfadapt: what: <the library's message>", destroys s, returns 1.
 int fail(sfa_surface *s, const char *what);
 
-// Creates the directory if it is missing (not its parents); false if it cannot.
+// Creates the directory and any missing parents; false if it cannot.
 bool ensure_directory(const std::string &path);
 
 // sfa_measure, NaN if it fails.

@@ -40,11 +40,11 @@ check "at t = T the RMS error is within 2 times the start mesh's" \
 check "at t = T the 99th percentile of the error is within 4.5 times the start mesh's largest" \
   below "$(figure "$work/end.txt" p99)" "$(figure "$work/start.txt" max)" 4.5
 
-check "the same run never remeshed (advection only) exits 0" \
+check "the same run never remeshed (advection only) exits 0, its checkpoints in a directory it creates with its parent" \
   sh -c "'$tool' enright --resolution 16 --steps 50 --adapt-every 0 --no-smoothing --report-every 1000 \
-           --checkpoints '$work/advected' >/dev/null"
+           --checkpoints '$work/missing/advected' >/dev/null"
 "$fidelity" "$work/tracked/t0.75.obj" --json >"$work/tracked.txt"
-"$fidelity" "$work/advected/t0.75.obj" --json >"$work/advected.txt"
+"$fidelity" "$work/missing/advected/t0.75.obj" --json >"$work/advected.txt"
 cat "$work/tracked.txt" "$work/advected.txt"
 check "without remeshing the vertices follow the flow (error below 1e-4)" \
   below "$(figure "$work/advected.txt" vertex_max)" 1e-4
