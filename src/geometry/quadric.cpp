@@ -110,9 +110,12 @@ QuadricEigen decompose(const Mat3 &quadric)
     // roots come near, which at a smooth vertex they always do: on vortex T = 2 the
     // decompositions took 7.6 G instructions that way and take 3.6 G this way. Where the
     // largest eigenvalue is not well separated (a ridge, a corner), Eigen's solvers decide.
+    //
     // b = A / scale, scale the power of two above A's largest entry (exact): no cube in f
-    // overflows or underflows. (Eigen's closed form, too, loses accuracy at 1e-200.) A zero
-    // or extreme A, or one with an entry not a number, goes to Eigen's solvers whole.
+    // overflows or underflows. (Eigen's closed form, too, loses accuracy at 1e-200.) The
+    // power is read off the entry's exponent bits: frexp and ldexp are library calls, which
+    // took a fifth of the decomposition. A zero or extreme A, or one with an entry not a
+    // number, goes to Eigen's solvers whole.
     const double largest_entry = quadric.cwiseAbs().maxCoeff();
     if (!(largest_entry >= 1e-290 && largest_entry <= 1e290))
         return decompose_by_eigen(quadric);
@@ -143,14 +146,7 @@ QuadricEigen decompose(const Mat3 &quadric)
     if (!(largest > 0))
         return by_eigen();
     e1 *= 1 / std::sqrt(largest);
-    // An orthonormal basis (u, w) of the plane normal to e1: u = e1 x the axis of e1's
-    // smallest coordinate.
-    const Vec3 magnitude = e1.cwiseAbs();
-    Vec3 u = magnitude[0] <= magnitude[1] && magnitude[0] <= magnitude[2] ? Vec3(0, e1[2], -e1[1])
-             : magnitude[1] <= magnitude[2]                               ? Vec3(-e1[2], 0, e1[0])
-                                                                         : Vec3(e1[1], -e1[0], 0);
-    u *= 1 / u.norm();
-    const Vec3 w = e1.cross(u);
+    const Vec3 u = e1.unitOrthogonal(), w = e1.cross(u); // an orthonormal basis of the plane normal to e1
     const auto times_b = [&b](const Vec3 &x) { // b x (Eigen's product was a call)
         return Vec3(b(0, 0) * x[0] + b(0, 1) * x[1] + b(0, 2) * x[2], b(1, 0) * x[0] + b(1, 1) * x[1] + b(1, 2) * x[2],
                     b(2, 0) * x[0] + b(2, 1) * x[1] + b(2, 2) * x[2]);
