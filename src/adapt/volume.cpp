@@ -163,16 +163,15 @@ ComponentOffsets component_offsets(const TriMesh &mesh, const std::vector<char> 
 // small), even a tiny offset carries one side through the other.
 std::vector<int32_t> faces_carried_through(const TriMesh &mesh, CrossingGuard &guard, const std::vector<Vec3> &moved)
 {
-    const std::vector<int32_t> &watched = guard.index_faces(mesh, moved);
-    std::vector<char> crossing(watched.size(), 0);
-#pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 256)
+    const std::vector<int32_t> &watched = guard.list_faces(mesh, moved);
+    std::vector<char> moves(watched.size());
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (size_t i = 0; i < watched.size(); ++i) {
         const Triangle &t = mesh.tri[watched[i]];
-        const bool moves = moved[t[0]] != mesh.pos[t[0]] || moved[t[1]] != mesh.pos[t[1]] ||
-                           moved[t[2]] != mesh.pos[t[2]];
-        const Vec3 at[3] = {moved[t[0]], moved[t[1]], moved[t[2]]};
-        crossing[i] = moves && guard.crosses(mesh, moved, t, at);
+        moves[i] = moved[t[0]] != mesh.pos[t[0]] || moved[t[1]] != mesh.pos[t[1]] || moved[t[2]] != mesh.pos[t[2]];
     }
+    // An offset moves nearly every watched face: each pair compared once.
+    const std::vector<char> crossing = guard.faces_meeting(mesh, moved, moves);
     std::vector<int32_t> faces;
     for (size_t i = 0; i < watched.size(); ++i)
         if (crossing[i])

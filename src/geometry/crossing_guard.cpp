@@ -8,6 +8,7 @@
 #include "mesh/parallel.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace sfa {
@@ -144,7 +145,7 @@ void CrossingGuard::renumber(const std::vector<int32_t> &vertex_map)
     watched_.swap(watched);
 }
 
-const std::vector<int32_t> &CrossingGuard::index_faces(const TriMesh &mesh, const std::vector<Vec3> &pos)
+const std::vector<int32_t> &CrossingGuard::list_faces(const TriMesh &mesh, const std::vector<Vec3> &pos)
 {
     // Which faces are watched, and their boxes, in parallel: finding them means looking at
     // every face of the mesh.
@@ -178,8 +179,15 @@ const std::vector<int32_t> &CrossingGuard::index_faces(const TriMesh &mesh, cons
     double cell_size = n > 0 ? 2 * edge_sum / (3.0 * n) : 1;
     if (!(cell_size > 0))
         cell_size = 1;
+    cells_ = CellFrame{origin, cell_size};
+    return faces_;
+}
+
+const std::vector<int32_t> &CrossingGuard::index_faces(const TriMesh &mesh, const std::vector<Vec3> &pos)
+{
+    list_faces(mesh, pos);
     grid_.build(
-        CellFrame{origin, cell_size}, n, [&](int32_t m) { return boxes_[m]; },
+        cells_, static_cast<int32_t>(faces_.size()), [&](int32_t m) { return boxes_[m]; },
         [&](int32_t m, const GridCell &first) { return FaceEntry{boxes_[m][0], boxes_[m][1], first, faces_[m]}; });
     return faces_;
 }
@@ -193,6 +201,35 @@ void CrossingGuard::refresh(const TriMesh &mesh, const std::vector<Vec3> &pos, i
     const Vec3 hi = pos[t[0]].cwiseMax(pos[t[1]]).cwiseMax(pos[t[2]]);
     // A face entered before keeps its old entries too; they only bring it up again.
     grid_.add(lo, hi, [&](const GridCell &first) { return FaceEntry{lo, hi, first, f}; });
+}
+
+std::vector<char> CrossingGuard::faces_meeting(const TriMesh &mesh, const std::vector<Vec3> &pos,
+                                               const std::vector<char> &asking) const
+{
+    const size_t n = faces_.size();
+    std::vector<std::atomic<char>> met(n);
+    for (std::atomic<char> &m : met)
+        m.store(0, std::memory_order_relaxed);
+    // The grid's cells, two mean edges: cells of one edge, a box's size, cost about as much
+    // (Enright), of two thirds of one 3 % more.
+    for_each_overlapping_pair(boxes_, cells_.size, [&](int32_t a, int32_t b) {
+        if (!asking[a] && !asking[b])
+            return;
+        const Triangle &s = mesh.tri[faces_[a]], &t = mesh.tri[faces_[b]];
+        for (int32_t v : t)
+            if (v == s[0] || v == s[1] || v == s[2])
+                return; // neighbours
+        if (!triangles_intersect(pos[s[0]], pos[s[1]], pos[s[2]], pos[t[0]], pos[t[1]], pos[t[2]]))
+            return;
+        if (asking[a])
+            met[a].store(1, std::memory_order_relaxed);
+        if (asking[b])
+            met[b].store(1, std::memory_order_relaxed);
+    });
+    std::vector<char> result(n);
+    for (size_t m = 0; m < n; ++m)
+        result[m] = met[m].load(std::memory_order_relaxed);
+    return result;
 }
 
 int32_t CrossingGuard::face_crossed(const TriMesh &mesh, const std::vector<Vec3> &pos, const Triangle &corner,

@@ -56,6 +56,9 @@ public:
     // Every face with a watched corner, with its corners at `pos` (mesh.pos, or the
     // positions a sweep would move the vertices to); returns them.
     const std::vector<int32_t> &index_faces(const TriMesh &mesh, const std::vector<Vec3> &pos);
+    // The same faces and their boxes at `pos`, for faces_meeting alone: the grid's index is
+    // not built, and stays as it was until index_faces builds it again.
+    const std::vector<int32_t> &list_faces(const TriMesh &mesh, const std::vector<Vec3> &pos);
     // Enters face f again, at `pos`, after an operation changed it or made it.
     void refresh(const TriMesh &mesh, const std::vector<Vec3> &pos, int32_t f);
 
@@ -71,6 +74,13 @@ public:
     // The same, naming an indexed face the new face would meet (-1 for none).
     int32_t face_crossed(const TriMesh &mesh, const std::vector<Vec3> &pos, const Triangle &corner,
                          const Vec3 (&at)[3], int32_t also = -1) const;
+    // For the faces list_faces or index_faces returned last, in its order, as they are at
+    // `pos` (the positions they were listed at): 1 for each face m with asking[m] that
+    // meets another of them sharing no vertex with it, 0 for the others. The same as asking
+    // crosses() of each such face, but each pair of overlapping boxes is compared once,
+    // from the pairs of the grid's buckets: cheaper where most faces ask.
+    std::vector<char> faces_meeting(const TriMesh &mesh, const std::vector<Vec3> &pos,
+                                    const std::vector<char> &asking) const;
 
 private:
     // A face in a cell, with its box and first cell as they were when it was entered: most
@@ -86,7 +96,8 @@ private:
     static constexpr char sheet_mark = 1, feature_mark = 2;
     std::vector<char> watched_; // 0, sheet_mark or feature_mark
     std::vector<int32_t> faces_;
-    std::vector<std::array<Vec3, 2>> boxes_; // of faces_, while they are indexed
+    std::vector<std::array<Vec3, 2>> boxes_; // of faces_, while they are listed
+    CellFrame cells_;                        // for them: cells of two mean edges
     // The faces indexed together, sorted bucket by bucket: a query reads one contiguous run
     // per cell; the faces refreshed since, chained per bucket.
     SpatialGrid<FaceEntry> grid_;

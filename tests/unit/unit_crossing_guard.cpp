@@ -150,6 +150,36 @@ void a_face_moved_through_the_other_side_of_a_sheet_crosses_it(void **)
     assert_true(guard.crosses(slab, slab.pos, t, piercing));
 }
 
+// faces_meeting compares each pair once where crosses() asks from each face: both must name
+// the same faces. The slab's top is pushed down in a ring of waves, so that some of its
+// faces pass through the bottom and others only come near it; every other face asks.
+void faces_meeting_names_the_faces_crosses_finds(void **)
+{
+    const TriMesh slab = box_mesh(0.02);
+    CrossingGuard guard(near_facing_sheet(slab));
+    std::vector<Vec3> moved = slab.pos;
+    for (Vec3 &p : moved)
+        if (p.z() == 0.02)
+            p.z() -= 0.03 * std::max(0.0, std::sin(40 * (p - Vec3(0.5, 0.5, 0)).norm()));
+    const std::vector<int32_t> listed = guard.list_faces(slab, moved);
+    std::vector<char> asking(listed.size());
+    for (size_t m = 0; m < listed.size(); ++m)
+        asking[m] = m % 2;
+    const std::vector<char> met = guard.faces_meeting(slab, moved, asking);
+    assert_true(guard.index_faces(slab, moved) == listed);
+    int32_t meeting = 0;
+    for (size_t m = 0; m < listed.size(); ++m) {
+        const Triangle &t = slab.tri[listed[m]];
+        const Vec3 at[3] = {moved[t[0]], moved[t[1]], moved[t[2]]};
+        const bool crosses = asking[m] && guard.crosses(slab, moved, t, at);
+        if (static_cast<bool>(met[m]) != crosses)
+            fail_msg("face %d: faces_meeting says %d, crosses() %d", listed[m], met[m], crosses);
+        meeting += crosses;
+    }
+    print_message("%d of %zu listed faces meet another\n", meeting, listed.size());
+    assert_true(meeting > 10 && meeting < static_cast<int32_t>(listed.size()) / 2 - 10); // some of those asking do not
+}
+
 void watched_vertices_follow_the_numbering(void **)
 {
     CrossingGuard guard(std::vector<char>{0, 1, 0, 1});
@@ -247,6 +277,7 @@ int main(void)
         cmocka_unit_test(a_sheet_thinner_than_an_edge_is_watched_a_thick_body_is_not),
         cmocka_unit_test(every_two_vertices_whose_fans_may_meet_are_watched),
         cmocka_unit_test(a_face_moved_through_the_other_side_of_a_sheet_crosses_it),
+        cmocka_unit_test(faces_meeting_names_the_faces_crosses_finds),
         cmocka_unit_test(watched_vertices_follow_the_numbering),
         cmocka_unit_test(features_are_watched_but_not_near_a_sheet),
         cmocka_unit_test(remeshing_never_carries_a_thin_filament_through_itself),
