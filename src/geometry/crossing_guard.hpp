@@ -77,8 +77,8 @@ public:
     // For the faces list_faces or index_faces returned last, in its order, as they are at
     // `pos` (the positions they were listed at): 1 for each face m with asking[m] that
     // meets another of them sharing no vertex with it, 0 for the others. The same as asking
-    // crosses() of each such face, but each pair of overlapping boxes is compared once,
-    // from the pairs of the grid's buckets: cheaper where most faces ask.
+    // crosses() of each such face, but each pair of overlapping boxes is compared once
+    // (swept_pairs.hpp, at rest): cheaper where most faces ask.
     std::vector<char> faces_meeting(const TriMesh &mesh, const std::vector<Vec3> &pos,
                                     const std::vector<char> &asking) const;
 
