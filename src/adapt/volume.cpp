@@ -70,11 +70,25 @@ std::vector<int32_t> triangles_brought_together(const TriMesh &mesh, const std::
                                                 const std::vector<double> &volume, const std::vector<Vec3> &moved)
 {
     const int32_t n = mesh.num_vertices(), count = static_cast<int32_t>(volume.size());
-    std::vector<double> area(count, 0), largest(count, 0);
-    for (const Triangle &c : mesh.tri)
-        area[label[c[0]]] += triangle_area(mesh.pos[c[0]], mesh.pos[c[1]], mesh.pos[c[2]]);
-    for (int32_t v = 0; v < n; ++v)
-        largest[label[v]] = std::max(largest[label[v]], (moved[v] - mesh.pos[v]).norm());
+    const std::vector<double> area = ordered_group_sums(
+        mesh.num_triangles(), count, 0.0, [&](int32_t t) { return label[mesh.tri[t][0]]; },
+        [&](int32_t t) {
+            const Triangle &c = mesh.tri[t];
+            return triangle_area(mesh.pos[c[0]], mesh.pos[c[1]], mesh.pos[c[2]]);
+        });
+    // The largest move of each component: each thread's (eight entries apart from the
+    // next thread's, a cache line), then the largest of those.
+    const int threads = loop_threads();
+    const size_t stride = static_cast<size_t>(count) + 8;
+    std::vector<double> moves(threads * stride, 0), largest(count, 0);
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (int32_t v = 0; v < n; ++v) {
+        double &most = moves[static_cast<size_t>(thread_index()) * stride + label[v]];
+        most = std::max(most, (moved[v] - mesh.pos[v]).norm());
+    }
+    for (int t = 0; t < threads; ++t)
+        for (int32_t c = 0; c < count; ++c)
+            largest[c] = std::max(largest[c], moves[t * stride + c]);
     bool any = false;
     for (int32_t c = 0; c < count; ++c)
         any = any || largest[c] > 1e-2 * 2 * std::abs(volume[c]) / area[c];
