@@ -365,10 +365,12 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
         for (int32_t t : *among)
             if (const auto at = std::lower_bound(near.begin(), near.end(), t); at != near.end() && *at == t)
                 some.push_back(static_cast<int32_t>(at - near.begin()));
+        LoopFailure failure; // look_at lists the contacts as it finds them
         if (const double cell = extent / count; cell > 0)
             for_each_overlapping_pair_with(boxes, some, cell, [&](int32_t s, int32_t t) {
-                look_at(near[s], near[t], thread_index());
+                failure.run([&] { look_at(near[s], near[t], thread_index()); });
             });
+        failure.rethrow();
     } else {
         FillBuffer<SweptTriangle> swept(static_cast<size_t>(n));
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)

@@ -317,9 +317,11 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
     std::vector<std::pair<int32_t, int32_t>> near;
     if (blocks > 1) {
         std::vector<std::vector<std::pair<int32_t, int32_t>>> found(static_cast<size_t>(loop_threads()));
+        LoopFailure failure;
         for_each_overlapping_pair(at_rest, detail::mean_extent(at_rest), [&](int32_t a, int32_t b) {
-            found[static_cast<size_t>(thread_index())].push_back({a, b});
+            failure.run([&] { found[static_cast<size_t>(thread_index())].push_back({a, b}); });
         });
+        failure.rethrow();
         for (const auto &list : found)
             near.insert(near.end(), list.begin(), list.end());
         std::sort(near.begin(), near.end());
@@ -473,11 +475,14 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
                 }
             }
     };
+    // A block's scratch grows with its boxes, and visit may allocate too.
     std::vector<Entry> entries;
     Sweep sweep;
+    LoopFailure failure;
 #pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 1) firstprivate(entries, sweep)
     for (int32_t b = 0; b < blocks; ++b)
-        compare_block(b, entries, sweep, thread_index());
+        failure.run([&] { compare_block(b, entries, sweep, thread_index()); });
+    failure.rethrow();
 }
 
 } // namespace sfa

@@ -6,8 +6,10 @@
 // This header sits in the lowest layer because every layer loops.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <vector>
 
 namespace sfa {
@@ -38,6 +40,36 @@ public:
 
 private:
     int previous_;
+};
+
+// Carries the first exception out of a parallel loop whose body must allocate as it goes
+// (scratch that grows with what it finds: the pairs of a broad phase): an exception that
+// leaves an OpenMP region ends the program. Each iteration's work runs in run(), which
+// does nothing more once one has failed; after the loop, rethrow() throws what failed.
+class LoopFailure {
+public:
+    template <class Work>
+    void run(Work &&work) noexcept
+    {
+        if (failed_.load(std::memory_order_relaxed))
+            return;
+        try {
+            work();
+        } catch (...) {
+            if (!failed_.exchange(true))
+                error_ = std::current_exception(); // the first failure only: one writer
+        }
+    }
+    // Called after the loop, outside any parallel region.
+    void rethrow() const
+    {
+        if (failed_.load())
+            std::rethrow_exception(error_);
+    }
+
+private:
+    std::atomic<bool> failed_{false};
+    std::exception_ptr error_;
 };
 
 // The first i in [0, count) for which bad(i) holds, or count: a min-reduction, the same

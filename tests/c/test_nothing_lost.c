@@ -46,12 +46,13 @@ typedef enum {
     OP_SET_VELOCITIES,
     OP_MOVE,
     OP_ADVECT,
+    OP_ADVECT_COLLISION_SAFE,
     OP_ADD_FIELD
 } operation;
 
 static const char *const operation_name[] = {"sfa_set_mesh", "sfa_set_mesh (dropping unreferenced)",
                                              "sfa_set_param", "sfa_set_velocities", "sfa_move", "sfa_advect",
-                                             "sfa_add_field"};
+                                             "sfa_advect (collision-safe)", "sfa_add_field"};
 
 static void swirl(void *ctx, int32_t n, const double *xyz, double t, double *vel)
 {
@@ -113,7 +114,8 @@ static int call(sfa_surface *s, operation op, const sfa_mesh_data *mesh, const s
     case OP_SET_PARAM: rc = sfa_set_param(s, SFA_PARAM_SMALL_ANGLE, 20); break;
     case OP_SET_VELOCITIES: rc = sfa_set_velocities(s, buf); break;
     case OP_MOVE: rc = sfa_move(s, 0.125, &taken); break;
-    case OP_ADVECT: rc = sfa_advect(s, swirl, NULL, 0, 0.01, &taken); break;
+    case OP_ADVECT:
+    case OP_ADVECT_COLLISION_SAFE: rc = sfa_advect(s, swirl, NULL, 0, 0.01, &taken); break;
     case OP_ADD_FIELD: rc = sfa_add_field(s, 3, buf, &id); break;
     }
     free(buf);
@@ -132,6 +134,9 @@ static void run_until_success(operation op)
         sfa_surface *s = loaded_surface(&mesh);
         if (op == OP_SET_MESH_DROPPING)
             assert_int_equal(sfa_set_param(s, SFA_PARAM_DROP_UNREFERENCED, 1), SFA_OK);
+        /* Its broad phase collects pairs in parallel loops, as they are found. */
+        if (op == OP_ADVECT_COLLISION_SAFE)
+            assert_int_equal(sfa_set_param(s, SFA_PARAM_COLLISION_SAFE_MOTION, 1), SFA_OK);
         snapshot before, after;
         snapshot_take(s, &before);
 
@@ -248,6 +253,12 @@ static void advect(void **state)
     NEEDS_HOOK(run_until_success(OP_ADVECT));
 }
 
+static void advect_collision_safe(void **state)
+{
+    (void)state;
+    NEEDS_HOOK(run_until_success(OP_ADVECT_COLLISION_SAFE));
+}
+
 static void add_field(void **state)
 {
     (void)state;
@@ -282,6 +293,7 @@ int main(void)
         cmocka_unit_test(set_velocities),
         cmocka_unit_test(move),
         cmocka_unit_test(advect),
+        cmocka_unit_test(advect_collision_safe),
         cmocka_unit_test(add_field),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
