@@ -81,10 +81,12 @@ std::vector<int32_t> triangles_brought_together(const TriMesh &mesh, const std::
     const int threads = loop_threads();
     const size_t stride = static_cast<size_t>(count) + 8;
     std::vector<double> moves(threads * stride, 0), largest(count, 0);
-#pragma omp parallel for num_threads(threads) schedule(static)
-    for (int32_t v = 0; v < n; ++v) {
-        double &most = moves[static_cast<size_t>(thread_index()) * stride + label[v]];
-        most = std::max(most, (moved[v] - mesh.pos[v]).norm());
+#pragma omp parallel num_threads(threads)
+    {
+        const size_t mine = static_cast<size_t>(thread_index()) * stride;
+#pragma omp for schedule(static)
+        for (int32_t v = 0; v < n; ++v)
+            moves[mine + label[v]] = std::max(moves[mine + label[v]], (moved[v] - mesh.pos[v]).norm());
     }
     for (int t = 0; t < threads; ++t)
         for (int32_t c = 0; c < count; ++c)

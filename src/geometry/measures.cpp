@@ -47,11 +47,14 @@ std::vector<Vec3> component_centres(const std::vector<Vec3> &positions, const st
     const size_t stride = static_cast<size_t>(count) + 3;
     const int32_t n = static_cast<int32_t>(positions.size());
     std::vector<Vec3> low(threads * stride, Vec3::Constant(inf)), high(threads * stride, Vec3::Constant(-inf));
-#pragma omp parallel for num_threads(threads) schedule(static)
-    for (int32_t v = 0; v < n; ++v) {
-        const size_t at = static_cast<size_t>(thread_index()) * stride + label[v];
-        low[at] = low[at].cwiseMin(positions[v]);
-        high[at] = high[at].cwiseMax(positions[v]);
+#pragma omp parallel num_threads(threads)
+    {
+        const size_t mine = static_cast<size_t>(thread_index()) * stride;
+#pragma omp for schedule(static)
+        for (int32_t v = 0; v < n; ++v) {
+            low[mine + label[v]] = low[mine + label[v]].cwiseMin(positions[v]);
+            high[mine + label[v]] = high[mine + label[v]].cwiseMax(positions[v]);
+        }
     }
     for (int t = 1; t < threads; ++t)
         for (int32_t c = 0; c < count; ++c) {
