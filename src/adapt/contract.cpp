@@ -402,6 +402,9 @@ public:
     // in the serial phase for every candidate whose ends are more than two edges from any
     // vertex an earlier contraction moved or gave a new fan.
     static constexpr bool plans_ahead = true;
+    // A contraction marks its kept vertex and the neighbours (may_have_changed), which come
+    // within two edges of a candidate's ends where the kept one is within three.
+    static constexpr int32_t changes_reach = 3;
 
     Contraction(const PassContext &context, const SurfaceAnalysis &analysis, const RepairSettings &settings)
         : mesh_(context.edit.mesh()), analysis_(analysis), repair_(settings, context.size),

@@ -5,12 +5,14 @@
 // below theta_s opposite) only where both are near a facing sheet, not on a CAD model's
 // features.
 #include "adapt/contract.hpp"
+#include "adapt/edge_pass.hpp"
 #include "adapt/settings.hpp"
 #include "geometry/guard_listener.hpp"
 #include "mesh/validate.hpp"
 
 #include <cstdarg>
 #include <cstddef>
+#include <deque>
 #include <setjmp.h>
 #include <vector>
 
@@ -70,12 +72,51 @@ void the_ends_of_a_needle_merge_near_a_facing_sheet_only(void **)
     assert_int_equal(left, 49);
 }
 
+// earliest_candidate_near (edge_pass.hpp), which decides which contraction candidates are
+// planned ahead, against a search of each candidate's surroundings edge by edge.
+void earliest_candidate_near_finds_the_first_within_reach(void **)
+{
+    sfa_mesh_data grid = shape_grid(8, 8, 1.0);
+    const TriMesh mesh = validated_mesh(MeshInput{grid.nverts, grid.xyz, grid.ntris, grid.tris, 0, false});
+    mesh_free(&grid);
+    struct Ends {
+        int32_t a, b;
+    };
+    const std::vector<Ends> candidates = {{40, 41}, {10, 11}, {12, 21}, {70, 71}, {41, 42}};
+    const int32_t n = mesh.num_vertices(), count = static_cast<int32_t>(candidates.size());
+    for (int32_t reach = 0; reach <= 3; ++reach) {
+        const std::vector<int32_t> earliest = earliest_candidate_near(mesh, candidates, reach);
+        std::vector<int32_t> expected(n, count);
+        for (int32_t k = count - 1; k >= 0; --k) {
+            std::vector<int32_t> hops(n, -1);
+            std::deque<int32_t> queue = {candidates[k].a, candidates[k].b};
+            hops[candidates[k].a] = hops[candidates[k].b] = 0;
+            while (!queue.empty()) {
+                const int32_t v = queue.front();
+                queue.pop_front();
+                expected[v] = k;
+                if (hops[v] < reach)
+                    mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
+                        if (hops[w] < 0) {
+                            hops[w] = hops[v] + 1;
+                            queue.push_back(w);
+                        }
+                    });
+            }
+        }
+        for (int32_t v = 0; v < n; ++v)
+            if (earliest[v] != expected[v])
+                fail_msg("reach %d, vertex %d: %d, expected %d", reach, v, earliest[v], expected[v]);
+    }
+}
+
 } // namespace
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(the_ends_of_a_needle_merge_near_a_facing_sheet_only),
+        cmocka_unit_test(earliest_candidate_near_finds_the_first_within_reach),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
