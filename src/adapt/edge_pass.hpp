@@ -112,11 +112,14 @@ int32_t run_edge_pass(MeshEdit &edit, Operation &operation)
         // judged again in the serial phase, once that one is made: its plan ahead would be
         // thrown away (contraction on Enright: 91k of 139k candidates, 90.5k of them with an
         // earlier one within three edges, which only 400 others have), so it is planned
-        // there only.
-        const std::vector<int32_t> earliest = earliest_candidate_near(mesh, candidates, Operation::changes_reach);
+        // there only. Finding them looks at every vertex: where the candidates are few
+        // (fewer than one in 16 vertices), all are planned ahead.
+        const bool few = static_cast<int64_t>(count) * 16 < mesh.num_vertices();
+        const std::vector<int32_t> earliest =
+            few ? std::vector<int32_t>() : earliest_candidate_near(mesh, candidates, Operation::changes_reach);
 #pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 64)
         for (int32_t k = 0; k < count; ++k) {
-            if (earliest[candidates[k].a] < k || earliest[candidates[k].b] < k) {
+            if (!few && (earliest[candidates[k].a] < k || earliest[candidates[k].b] < k)) {
                 planned[k] = not_planned;
                 continue;
             }
