@@ -253,7 +253,8 @@ bool stays_clear_of_neighbours(const TriMesh &mesh, int32_t h, const Vec3 &merge
                     t[2] == u[0] || t[2] == u[1] || t[2] == u[2])
                     continue;
                 const Vec3 p0 = corner(t[0]), p1 = corner(t[1]), p2 = corner(t[2]);
-                if ((p0.cwiseMax(p1).cwiseMax(p2) - lo).minCoeff() < 0 || (hi - p0.cwiseMin(p1).cwiseMin(p2)).minCoeff() < 0)
+                if ((p0.cwiseMax(p1).cwiseMax(p2) - lo).minCoeff() < 0 ||
+                    (hi - p0.cwiseMin(p1).cwiseMin(p2)).minCoeff() < 0)
                     continue; // boxes apart
                 ++tests;
                 clear = !triangles_intersect(p0, p1, p2, q[0], q[1], q[2]);
