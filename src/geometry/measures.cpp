@@ -39,9 +39,9 @@ std::vector<Vec3> component_centres(const std::vector<Vec3> &positions, const st
 {
     // Each thread bounds the components in its share of the vertices, then the bounds are
     // joined: a bound is one of the coordinates, the same in any order (a volume step calls
-    // this several times, and as one loop it kept the second core idle).
-    // Each thread's bounds three entries apart from the next thread's, more than a cache
-    // line: threads that write into one line take it from each other at every write.
+    // this several times, and as one loop it kept the second core idle). Each thread's
+    // bounds lie three entries past the previous thread's, more than a cache line: threads
+    // that write into one line take it from each other at every write.
     const double inf = std::numeric_limits<double>::infinity();
     const int threads = loop_threads();
     const size_t stride = static_cast<size_t>(count) + 3;
