@@ -76,21 +76,9 @@ std::vector<int32_t> triangles_brought_together(const TriMesh &mesh, const std::
             const Triangle &c = mesh.tri[t];
             return triangle_area(mesh.pos[c[0]], mesh.pos[c[1]], mesh.pos[c[2]]);
         });
-    // The largest move of each component: each thread's (eight entries apart from the
-    // next thread's, a cache line), then the largest of those.
-    const int threads = loop_threads();
-    const size_t stride = static_cast<size_t>(count) + 8;
-    std::vector<double> moves(threads * stride, 0), largest(count, 0);
-#pragma omp parallel num_threads(threads)
-    {
-        const size_t mine = static_cast<size_t>(thread_index()) * stride;
-#pragma omp for schedule(static)
-        for (int32_t v = 0; v < n; ++v)
-            moves[mine + label[v]] = std::max(moves[mine + label[v]], (moved[v] - mesh.pos[v]).norm());
-    }
-    for (int t = 0; t < threads; ++t)
-        for (int32_t c = 0; c < count; ++c)
-            largest[c] = std::max(largest[c], moves[t * stride + c]);
+    const std::vector<double> largest = ordered_group_reduce(
+        n, count, 0.0, [&](int32_t v) { return label[v]; }, [&](int32_t v) { return (moved[v] - mesh.pos[v]).norm(); },
+        [](double a, double b) { return std::max(a, b); });
     bool any = false;
     for (int32_t c = 0; c < count; ++c)
         any = any || largest[c] > 1e-2 * 2 * std::abs(volume[c]) / area[c];

@@ -59,12 +59,11 @@ std::vector<int8_t> promoted_by_edges(const TriMesh &mesh, std::vector<int8_t> c
     std::vector<char> sharp(static_cast<size_t>(halfedges), 0);
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t h = 0; h < halfedges; ++h) {
+        if (canonical_halfedge(mesh, h) != h)
+            continue;
         const int32_t g = mesh.opp[h];
-        if (g < 0)
-            sharp[h] = 1;
-        else if (g > h)
-            sharp[h] = area_vectors[TriMesh::face(h)].dot(area_vectors[TriMesh::face(g)]) <=
-                       cos_ridge * length[TriMesh::face(h)] * length[TriMesh::face(g)];
+        sharp[h] = g < 0 || area_vectors[TriMesh::face(h)].dot(area_vectors[TriMesh::face(g)]) <=
+                                cos_ridge * length[TriMesh::face(h)] * length[TriMesh::face(g)];
     }
     std::vector<int32_t> sharp_edges(mesh.pos.size(), 0);
     for (int32_t h = 0; h < halfedges; ++h)
@@ -127,7 +126,7 @@ std::vector<char> pruned_edges(const TriMesh &mesh, const std::vector<int8_t> &c
         keep[h] = strength[h] > 0;
     std::vector<int32_t> edges_at(mesh.pos.size(), 0);
     for (int32_t h = 0; h < halfedges; ++h)
-        if (keep[h] && (mesh.opp[h] < 0 || mesh.opp[h] > h)) {
+        if (keep[h] && canonical_halfedge(mesh, h) == h) {
             ++edges_at[mesh.tail(h)];
             ++edges_at[mesh.head(h)];
         }

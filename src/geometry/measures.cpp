@@ -6,6 +6,7 @@
 #include "mesh/parallel.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -37,34 +38,19 @@ double enclosed_volume(const TriMesh &mesh, const Components &components)
 std::vector<Vec3> component_centres(const std::vector<Vec3> &positions, const std::vector<int32_t> &label,
                                     int32_t count)
 {
-    // Each thread bounds the components in its share of the vertices, then the bounds are
-    // joined: a bound is one of the coordinates, the same in any order (a volume step calls
-    // this several times, and as one loop it kept the second core idle). Each thread's
-    // bounds lie three entries past the previous thread's, more than a cache line: threads
-    // that write into one line take it from each other at every write.
+    // Each component's bounding box, reduced in parallel (a volume step calls this several
+    // times, and as one loop it kept the second core idle): a bound is one of the
+    // coordinates, the same in any order.
     const double inf = std::numeric_limits<double>::infinity();
-    const int threads = loop_threads();
-    const size_t stride = static_cast<size_t>(count) + 3;
-    const int32_t n = static_cast<int32_t>(positions.size());
-    std::vector<Vec3> low(threads * stride, Vec3::Constant(inf)), high(threads * stride, Vec3::Constant(-inf));
-#pragma omp parallel num_threads(threads)
-    {
-        const size_t mine = static_cast<size_t>(thread_index()) * stride;
-#pragma omp for schedule(static)
-        for (int32_t v = 0; v < n; ++v) {
-            low[mine + label[v]] = low[mine + label[v]].cwiseMin(positions[v]);
-            high[mine + label[v]] = high[mine + label[v]].cwiseMax(positions[v]);
-        }
-    }
-    for (int t = 1; t < threads; ++t)
-        for (int32_t c = 0; c < count; ++c) {
-            low[c] = low[c].cwiseMin(low[t * stride + c]);
-            high[c] = high[c].cwiseMax(high[t * stride + c]);
-        }
+    using Bounds = std::array<Vec3, 2>;
+    const std::vector<Bounds> bounds = ordered_group_reduce(
+        static_cast<int32_t>(positions.size()), count, Bounds{Vec3::Constant(inf), Vec3::Constant(-inf)},
+        [&](int32_t v) { return label[v]; }, [&](int32_t v) { return Bounds{positions[v], positions[v]}; },
+        [](const Bounds &a, const Bounds &b) { return Bounds{a[0].cwiseMin(b[0]), a[1].cwiseMax(b[1])}; });
     std::vector<Vec3> centre(count, Vec3::Zero());
     for (int32_t c = 0; c < count; ++c)
-        if (low[c].x() <= high[c].x())
-            centre[c] = low[c] + (high[c] - low[c]) / 2; // not (low + high) / 2: no overflow
+        if (const Vec3 &low = bounds[c][0], &high = bounds[c][1]; low.x() <= high.x())
+            centre[c] = low + (high - low) / 2; // not (low + high) / 2: no overflow
     return centre;
 }
 

@@ -88,24 +88,36 @@ int32_t first_where(int32_t count, Bad &&bad)
 // The block of ordered_sum and ordered_group_sums.
 inline constexpr int32_t ordered_sum_block = 4096;
 
-// Per group g in [0, groups): the sum of term(i) over the i in [0, count) with
-// group_of(i) == g, rounded as ordered_sum rounds (with one group, its very result).
-// Allocates blocks x groups partial sums; group_of and term must not throw.
-template <class T, class GroupOf, class Term>
-std::vector<T> ordered_group_sums(int32_t count, int32_t groups, const T &zero, GroupOf &&group_of, Term &&term)
+// Per group g in [0, groups): term(i) over the i in [0, count) with group_of(i) == g,
+// combined by combine(a, b) from `identity`, block by block in order and then the blocks'
+// results in order, so that the result does not depend on the number of threads.
+// Allocates blocks x groups partial results; group_of, term and combine must not throw.
+template <class T, class GroupOf, class Term, class Combine>
+std::vector<T> ordered_group_reduce(int32_t count, int32_t groups, const T &identity, GroupOf &&group_of, Term &&term,
+                                    Combine &&combine)
 {
     constexpr int32_t block = ordered_sum_block;
     const int32_t blocks = (count + block - 1) / block;
-    std::vector<T> partial(static_cast<size_t>(blocks) * groups, zero);
+    std::vector<T> partial(static_cast<size_t>(blocks) * groups, identity);
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t b = 0; b < blocks; ++b)
-        for (int32_t i = b * block; i < count && i < (b + 1) * block; ++i)
-            partial[static_cast<size_t>(b) * groups + group_of(i)] += term(i);
-    std::vector<T> total(groups, zero);
+        for (int32_t i = b * block; i < count && i < (b + 1) * block; ++i) {
+            T &into = partial[static_cast<size_t>(b) * groups + group_of(i)];
+            into = combine(into, term(i));
+        }
+    std::vector<T> total(groups, identity);
     for (int32_t b = 0; b < blocks; ++b)
         for (int32_t g = 0; g < groups; ++g)
-            total[g] += partial[static_cast<size_t>(b) * groups + g];
+            total[g] = combine(total[g], partial[static_cast<size_t>(b) * groups + g]);
     return total;
+}
+
+// ordered_group_reduce's sums, rounded as ordered_sum rounds (with one group, its very
+// result).
+template <class T, class GroupOf, class Term>
+std::vector<T> ordered_group_sums(int32_t count, int32_t groups, const T &zero, GroupOf &&group_of, Term &&term)
+{
+    return ordered_group_reduce(count, groups, zero, group_of, term, [](const T &a, const T &b) { return T(a + b); });
 }
 
 // The sum of term(i) for i in [0, count): fixed blocks summed in order, in parallel, and
