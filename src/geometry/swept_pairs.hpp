@@ -15,6 +15,7 @@
 
 #include "geometry/box_pairs.hpp"
 #include "mesh/fill_buffer.hpp"
+#include "mesh/parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -93,48 +94,124 @@ inline double mean_extent(const std::vector<Box> &boxes)
     return count ? sum / static_cast<double>(count) : 0;
 }
 
-// Numbers the distinct keys in the order in which they first come, and sets number[i] to
-// that of key[i]; returns how many there are. A table hashed by key, kept at most half
-// full; consecutive equal keys are looked up once.
-inline int32_t number_by_key(const std::vector<uint64_t> &key, std::vector<int32_t> &number)
-{
-    number.resize(key.size());
-    std::vector<uint64_t> table_key(1024);
-    std::vector<int32_t> table_number(1024, -1); // -1: an empty slot
-    const auto slot_of = [&](uint64_t k) {
-        const size_t mask = table_key.size() - 1;
+// Distinct keys numbered from 0 in the order in which they are first asked for: a table
+// hashed by key, kept at most half full.
+class KeyNumbering {
+public:
+    int32_t count() const { return count_; }
+    // The number of k, a new one if k is new.
+    int32_t number_of(uint64_t k)
+    {
+        size_t at = slot_of(k);
+        if (number_[at] >= 0)
+            return number_[at];
+        if (2 * (static_cast<size_t>(count_) + 1) > key_.size()) {
+            std::vector<uint64_t> old_key(2 * key_.size());
+            std::vector<int32_t> old_number(2 * key_.size(), -1);
+            old_key.swap(key_);
+            old_number.swap(number_);
+            for (size_t j = 0; j < old_key.size(); ++j)
+                if (old_number[j] >= 0) {
+                    const size_t to = slot_of(old_key[j]);
+                    key_[to] = old_key[j];
+                    number_[to] = old_number[j];
+                }
+            at = slot_of(k);
+        }
+        key_[at] = k;
+        return number_[at] = count_++;
+    }
+
+private:
+    size_t slot_of(uint64_t k) const
+    {
+        const size_t mask = key_.size() - 1;
         size_t at = static_cast<size_t>((k * 0x9E3779B97F4A7C15u) >> 20) & mask; // Fibonacci hashing
-        while (table_number[at] >= 0 && table_key[at] != k)
+        while (number_[at] >= 0 && key_[at] != k)
             at = (at + 1) & mask;
         return at;
-    };
-    int32_t count = 0;
-    for (size_t i = 0; i < key.size(); ++i) {
-        if (i > 0 && key[i] == key[i - 1]) {
-            number[i] = number[i - 1];
-            continue;
-        }
-        size_t at = slot_of(key[i]);
-        if (table_number[at] < 0) {
-            if (2 * (static_cast<size_t>(count) + 1) > table_key.size()) {
-                std::vector<uint64_t> old_key(2 * table_key.size());
-                std::vector<int32_t> old_number(2 * table_key.size(), -1);
-                old_key.swap(table_key);
-                old_number.swap(table_number);
-                for (size_t j = 0; j < old_key.size(); ++j)
-                    if (old_number[j] >= 0) {
-                        const size_t to = slot_of(old_key[j]);
-                        table_key[to] = old_key[j];
-                        table_number[to] = old_number[j];
-                    }
-                at = slot_of(key[i]);
-            }
-            table_key[at] = key[i];
-            table_number[at] = count++;
-        }
-        number[i] = table_number[at];
     }
-    return count;
+
+    std::vector<uint64_t> key_ = std::vector<uint64_t>(1024);
+    std::vector<int32_t> number_ = std::vector<int32_t>(1024, -1); // -1: an empty slot
+    int32_t count_ = 0;
+};
+
+// Numbers the distinct keys in the order in which they first come, and sets number[i] to
+// that of key[i]; returns how many there are. The keys are cut into `runs` runs, numbered
+// in parallel, each on its own; then each run's keys, in the order they first come in it,
+// are numbered through one table, run after run, which is the order in which they first
+// come in all, and each run's numbers are mapped to those. Consecutive equal keys are
+// looked up once.
+inline int32_t number_by_key(const std::vector<uint64_t> &key, std::vector<int32_t> &number, int runs)
+{
+    const size_t n = key.size();
+    number.resize(n);
+    runs = static_cast<int>(std::clamp<size_t>(n, 1, static_cast<size_t>(std::max(runs, 1))));
+    const auto run_start = [&](int r) { return n * static_cast<size_t>(r) / static_cast<size_t>(runs); };
+    std::vector<std::vector<uint64_t>> firsts(static_cast<size_t>(runs)); // each run's keys, as they first come
+    LoopFailure failure;
+#pragma omp parallel for num_threads(loop_threads()) schedule(static, 1)
+    for (int r = 0; r < runs; ++r)
+        failure.run([&] {
+            KeyNumbering local;
+            for (size_t i = run_start(r); i < run_start(r + 1); ++i) {
+                if (i > run_start(r) && key[i] == key[i - 1]) {
+                    number[i] = number[i - 1];
+                    continue;
+                }
+                number[i] = local.number_of(key[i]);
+                if (number[i] == static_cast<int32_t>(firsts[r].size()))
+                    firsts[r].push_back(key[i]);
+            }
+        });
+    failure.rethrow();
+    KeyNumbering all;
+    std::vector<std::vector<int32_t>> in_all(static_cast<size_t>(runs));
+    for (int r = 0; r < runs; ++r)
+        for (uint64_t k : firsts[r])
+            in_all[r].push_back(all.number_of(k));
+#pragma omp parallel for num_threads(loop_threads()) schedule(static, 1)
+    for (int r = 1; r < runs; ++r) // the first run's numbers are already those of all
+        for (size_t i = run_start(r); i < run_start(r + 1); ++i)
+            number[i] = in_all[r][static_cast<size_t>(number[i])];
+    return all.count();
+}
+
+// Sets `order` to 0, ..., n - 1 sorted by part_of(i) (parts numbered from 0 to parts - 1),
+// in increasing order within each part, and part_start[p] to the place where part p begins
+// (part_start[parts] = n). A counting sort in `runs` runs of indices, each counted and then
+// dealt in parallel to the places its part has for it; at most two counters per index
+// in all, whatever the number of parts.
+template <class PartOf>
+void sort_into_parts(int32_t n, size_t parts, PartOf &&part_of, int runs, std::vector<int32_t> &part_start,
+                     std::vector<int32_t> &order)
+{
+    const size_t most_runs = std::max<size_t>(1, 2 * static_cast<size_t>(n) / std::max<size_t>(parts, 1));
+    runs = static_cast<int>(std::clamp<size_t>(static_cast<size_t>(runs), 1, most_runs));
+    const auto run_start = [&](int r) { return static_cast<int32_t>(static_cast<int64_t>(n) * r / runs); };
+    // Run r's count of part p, then the place of its next index in part p: at r parts + p.
+    std::vector<int32_t> place(static_cast<size_t>(runs) * parts, 0);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static, 1)
+    for (int r = 0; r < runs; ++r)
+        for (int32_t i = run_start(r); i < run_start(r + 1); ++i)
+            ++place[static_cast<size_t>(r) * parts + part_of(i)];
+    part_start.assign(parts + 1, 0);
+    int32_t at = 0;
+    for (size_t p = 0; p < parts; ++p) {
+        part_start[p] = at;
+        for (int r = 0; r < runs; ++r) {
+            const int32_t count = place[static_cast<size_t>(r) * parts + p];
+            place[static_cast<size_t>(r) * parts + p] = at;
+            at += count;
+        }
+    }
+    part_start[parts] = at;
+    order.resize(static_cast<size_t>(n));
+#pragma omp parallel for num_threads(loop_threads()) schedule(static, 1)
+    for (int r = 0; r < runs; ++r)
+        for (int32_t i = run_start(r); i < run_start(r + 1); ++i)
+            order[static_cast<size_t>(place[static_cast<size_t>(r) * parts + part_of(i)]++)] = i;
 }
 
 // Sorts (key, index) pairs, entered in increasing order of index, by key and then index,
@@ -218,17 +295,18 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
     const int32_t n = static_cast<int32_t>(triangles.size());
     if (n < 2)
         return;
-    // The size of a triangle, or where every one is a point, of the way it moves.
+    // The size of a triangle, or where every one is a point, of the way it moves: the mean
+    // extent of the start boxes of an evenly spread sample of at least 4096 of them, which
+    // sets the blocks' size alone (reading every triangle for it took a twentieth of the
+    // search on collision-safe Enright, on one thread while the others waited).
+    const int32_t stride = std::max(1, n / 4096);
     double edge = 0;
     size_t sized = 0;
-    Vec3 lowest = Vec3::Constant(std::numeric_limits<double>::infinity());
-    for (const SweptTriangle &t : triangles) {
-        if (const double extent = (t.start[1] - t.start[0]).maxCoeff(); std::isfinite(extent)) {
+    for (int32_t t = 0; t < n; t += stride)
+        if (const double extent = (triangles[t].start[1] - triangles[t].start[0]).maxCoeff(); std::isfinite(extent)) {
             edge += extent;
             ++sized;
         }
-        lowest = lowest.cwiseMin(t.start[0]); // a NaN corner leaves it as it was
-    }
     edge = sized ? edge / static_cast<double>(sized) : 0;
     if (!(edge > 0)) {
         std::vector<Box> at_rest_each(static_cast<size_t>(n));
@@ -236,7 +314,12 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
             at_rest_each[t] = swept_in_frame(triangles[t], Vec3::Zero());
         edge = detail::mean_extent(at_rest_each);
     }
-    if (!(edge > 0) || !lowest.allFinite())
+    // The blocks' origin: any point will do, and the first triangle's corner with numbers
+    // is near the others. A triangle without numbers in its boxes overlaps nothing.
+    int32_t first_finite = 0;
+    while (first_finite < n && !triangles[first_finite].start[0].allFinite())
+        ++first_finite;
+    if (!(edge > 0) || first_finite == n)
         return; // every triangle a point at rest, or every one NaN: none comes to meet another
     // Each triangle's block is that of its start box's lowest corner; the blocks numbered
     // in the order in which triangles first fall in them (neighbours in the mesh's order
@@ -244,7 +327,7 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
     // the time of sorting them by key on bench_collision's sphere. Each block is cut into
     // eight octants, its parts, each a run of triangles in increasing order, so that a
     // neighbouring block gives its guests from the parts that can reach it alone.
-    const CellFrame halves_frame{lowest, swept_pairs_block_size * edge / 2};
+    const CellFrame halves_frame{triangles[first_finite].start[0], swept_pairs_block_size * edge / 2};
     std::vector<uint64_t> key(static_cast<size_t>(n));
     std::vector<uint8_t> octant(static_cast<size_t>(n));
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
@@ -256,18 +339,13 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
         key[t] = cell_key(block);
     }
     std::vector<int32_t> block_of;
-    const int32_t blocks = detail::number_by_key(key, block_of);
+    const int32_t blocks = detail::number_by_key(key, block_of, loop_threads());
     // Part p of block b is number 8 b + p; its triangles are order[part_start[8 b + p]] on.
-    std::vector<int32_t> part_start(8 * static_cast<size_t>(blocks) + 1, 0), order(static_cast<size_t>(n));
-    for (int32_t t = 0; t < n; ++t)
-        ++part_start[8 * static_cast<size_t>(block_of[t]) + octant[t] + 1];
-    for (size_t p = 0; p + 1 < part_start.size(); ++p)
-        part_start[p + 1] += part_start[p];
-    {
-        std::vector<int32_t> fill(part_start.begin(), part_start.end() - 1);
-        for (int32_t t = 0; t < n; ++t)
-            order[fill[8 * static_cast<size_t>(block_of[t]) + octant[t]]++] = t;
-    }
+    std::vector<int32_t> part_start, order;
+    detail::sort_into_parts(
+        n, 8 * static_cast<size_t>(blocks),
+        [&](int32_t t) { return 8 * static_cast<size_t>(block_of[t]) + octant[t]; }, loop_threads(), part_start,
+        order);
     const auto block_start = [&](int32_t b) { return part_start[8 * static_cast<size_t>(b)]; };
 
     // Each block's frame (its triangles' mean displacement); for each of its parts what
