@@ -150,30 +150,28 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
     // the mean of its triangles' (the class of a sum is that of its direction), and its
     // box grown by d / 2 all round, so that two edges closer than d have overlapping boxes.
     std::vector<int32_t> edges;
-    std::vector<int16_t> normal_class;
-    std::vector<Box> boxes;
     edges.reserve(mesh_.opp.size() / 2);
-    normal_class.reserve(mesh_.opp.size() / 2);
-    boxes.reserve(mesh_.opp.size() / 2);
+    for (int32_t h = 0; h < 3 * faces; ++h)
+        if (const int32_t twin = mesh_.opp[h]; twin >= 0 && twin < h)
+            edges.push_back(h);
+    const int32_t edge_count = static_cast<int32_t>(edges.size());
+    std::vector<int16_t> normal_class(edges.size());
+    std::vector<Box> boxes(edges.size());
     const bool uniform = data_.size.empty();
     const double uniform_distance = ratio_ * 0.5 * (l_ + l_); // merge_distance's, without a size field
-    double cell = 0;
-    for (int32_t f = 0; f < faces; ++f) {
-        const Triangle &t = mesh_.tri[f];
-        for (int k = 0; k < 3; ++k) {
-            const int32_t h = 3 * f + k, twin = mesh_.opp[h];
-            if (twin < 0 || twin > h)
-                continue;
-            const int32_t a = t[k], b = t[k == 2 ? 0 : k + 1];
-            const double d = uniform ? uniform_distance : merge_distance(a, b);
-            const Vec3 grow = Vec3::Constant(0.5 * d);
-            edges.push_back(h);
-            normal_class.push_back(
-                static_cast<int16_t>(classes.of(face_normals[f] + face_normals[TriMesh::face(twin)])));
-            boxes.push_back({pos_[a].cwiseMin(pos_[b]) - grow, pos_[a].cwiseMax(pos_[b]) + grow});
-            cell += (pos_[b] - pos_[a]).norm() + d;
-        }
+    const auto distance_of = [&](int32_t a, int32_t b) { return uniform ? uniform_distance : merge_distance(a, b); };
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t e = 0; e < edge_count; ++e) {
+        const int32_t h = edges[e], a = mesh_.tail(h), b = mesh_.head(h);
+        const Vec3 grow = Vec3::Constant(0.5 * distance_of(a, b));
+        normal_class[e] = static_cast<int16_t>(
+            classes.of(face_normals[TriMesh::face(h)] + face_normals[TriMesh::face(mesh_.opp[h])]));
+        boxes[e] = {pos_[a].cwiseMin(pos_[b]) - grow, pos_[a].cwiseMax(pos_[b]) + grow};
     }
+    double cell = ordered_sum(edge_count, 0.0, [&](int32_t e) {
+        const int32_t a = mesh_.tail(edges[e]), b = mesh_.head(edges[e]);
+        return (pos_[b] - pos_[a]).norm() + distance_of(a, b);
+    });
     const size_t count = edges.size();
     if (count < 2 || !(cell > 0))
         return {};

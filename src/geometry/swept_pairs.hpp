@@ -155,8 +155,9 @@ inline int32_t number_by_key(const std::vector<uint64_t> &key, std::vector<int32
     for (int r = 0; r < runs; ++r)
         failure.run([&] {
             KeyNumbering local;
-            for (size_t i = run_start(r); i < run_start(r + 1); ++i) {
-                if (i > run_start(r) && key[i] == key[i - 1]) {
+            const size_t begin = run_start(r), end = run_start(r + 1);
+            for (size_t i = begin; i < end; ++i) {
+                if (i > begin && key[i] == key[i - 1]) {
                     number[i] = number[i - 1];
                     continue;
                 }
@@ -173,7 +174,7 @@ inline int32_t number_by_key(const std::vector<uint64_t> &key, std::vector<int32
             in_all[r].push_back(all.number_of(k));
 #pragma omp parallel for num_threads(loop_threads()) schedule(static, 1)
     for (int r = 1; r < runs; ++r) // the first run's numbers are already those of all
-        for (size_t i = run_start(r); i < run_start(r + 1); ++i)
+        for (size_t i = run_start(r), end = run_start(r + 1); i < end; ++i)
             number[i] = in_all[r][static_cast<size_t>(number[i])];
     return all.count();
 }
@@ -194,7 +195,7 @@ void sort_into_parts(int32_t n, size_t parts, PartOf &&part_of, int runs, std::v
     std::vector<int32_t> place(static_cast<size_t>(runs) * parts, 0);
 #pragma omp parallel for num_threads(loop_threads()) schedule(static, 1)
     for (int r = 0; r < runs; ++r)
-        for (int32_t i = run_start(r); i < run_start(r + 1); ++i)
+        for (int32_t i = run_start(r), end = run_start(r + 1); i < end; ++i)
             ++place[static_cast<size_t>(r) * parts + part_of(i)];
     part_start.assign(parts + 1, 0);
     int32_t at = 0;
@@ -210,7 +211,7 @@ void sort_into_parts(int32_t n, size_t parts, PartOf &&part_of, int runs, std::v
     order.resize(static_cast<size_t>(n));
 #pragma omp parallel for num_threads(loop_threads()) schedule(static, 1)
     for (int r = 0; r < runs; ++r)
-        for (int32_t i = run_start(r); i < run_start(r + 1); ++i)
+        for (int32_t i = run_start(r), end = run_start(r + 1); i < end; ++i)
             order[static_cast<size_t>(place[static_cast<size_t>(r) * parts + part_of(i)]++)] = i;
 }
 
