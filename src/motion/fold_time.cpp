@@ -125,21 +125,19 @@ double triangle_fold_time(const Vec3 &e1, const Vec3 &e2, const Vec3 &d1, const 
 
 Fold first_fold(const TriMesh &mesh, const std::vector<Vec3> &velocity)
 {
-    // Each triangle's time, then the earliest in triangle order: the same answer for any
+    // Each triangle's time, and the earliest in triangle order (the first of equal ones),
+    // block by block in parallel and then the blocks in order: the same answer for any
     // number of threads.
-    const int32_t nt = mesh.num_triangles();
-    std::vector<double> time(nt);
-#pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t k = 0; k < nt; ++k) {
-        const Triangle &t = mesh.tri[k];
-        time[k] = triangle_fold_time(mesh.pos[t[1]] - mesh.pos[t[0]], mesh.pos[t[2]] - mesh.pos[t[0]],
-                                     velocity[t[1]] - velocity[t[0]], velocity[t[2]] - velocity[t[0]]);
-    }
-    Fold first{std::numeric_limits<double>::infinity(), -1};
-    for (int32_t k = 0; k < nt; ++k)
-        if (time[k] < first.time)
-            first = {time[k], k};
-    return first;
+    const Fold none{std::numeric_limits<double>::infinity(), -1};
+    return ordered_group_reduce(
+        mesh.num_triangles(), 1, none, [](int32_t) { return 0; },
+        [&](int32_t k) {
+            const Triangle &t = mesh.tri[k];
+            return Fold{triangle_fold_time(mesh.pos[t[1]] - mesh.pos[t[0]], mesh.pos[t[2]] - mesh.pos[t[0]],
+                                           velocity[t[1]] - velocity[t[0]], velocity[t[2]] - velocity[t[0]]),
+                        k};
+        },
+        [](const Fold &first, const Fold &next) { return next.time < first.time ? next : first; })[0];
 }
 
 double first_fold_time(const TriMesh &mesh, const std::vector<Vec3> &velocity) { return first_fold(mesh, velocity).time; }

@@ -3,10 +3,13 @@
 // triangle under linear motion, against hand-computed answers.
 #include "motion/fold_time.hpp"
 
+#include "mesh/parallel.hpp"
+
 #include <cmath>
 #include <cstdarg>
 #include <cstddef>
 #include <limits>
+#include <vector>
 #include <setjmp.h>
 
 extern "C" {
@@ -104,6 +107,30 @@ void first_fold_names_the_triangle(void **)
     assert_int_equal(first_fold(mesh, std::vector<Vec3>(4, Vec3(1, 2, 3))).triangle, -1);
 }
 
+// Among many triangles, in blocks that threads take apart, the first fold is the earliest
+// and, of equal times, the lowest triangle, whatever the number of threads: 30,000
+// separate triangles, each with its apex moving through its base at a speed of its own;
+// the fastest, at triangles 9,000, 17,000 and 25,000, fold first and together.
+void first_fold_is_the_lowest_of_the_earliest_among_many(void **)
+{
+    TriMesh mesh;
+    std::vector<Vec3> velocity;
+    for (int32_t k = 0; k < 30000; ++k) {
+        const Vec3 at(3.0 * k, 0, 0);
+        for (const Vec3 &corner : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)})
+            mesh.pos.push_back(at + corner);
+        mesh.tri.push_back(Triangle{3 * k, 3 * k + 1, 3 * k + 2});
+        const bool fastest = k == 9000 || k == 17000 || k == 25000;
+        velocity.insert(velocity.end(), {Vec3::Zero(), Vec3::Zero(), Vec3(0, fastest ? -4.0 : -1.0 - k * 1e-5, 0)});
+    }
+    for (int threads : {1, 2, 3}) {
+        const ThreadLimit limit(threads);
+        const Fold fold = first_fold(mesh, velocity);
+        assert_int_equal(fold.triangle, 9000);
+        assert_float_equal(fold.time, 0.25, 1e-15);
+    }
+}
+
 } // namespace
 
 int main()
@@ -115,6 +142,7 @@ int main()
         cmocka_unit_test(faster_apex_folds_sooner),
         cmocka_unit_test(fold_time_is_the_same_at_every_scale),
         cmocka_unit_test(first_fold_names_the_triangle),
+        cmocka_unit_test(first_fold_is_the_lowest_of_the_earliest_among_many),
     };
     return cmocka_run_group_tests_name("unit_motion", tests, nullptr, nullptr);
 }
