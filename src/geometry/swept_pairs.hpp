@@ -179,42 +179,6 @@ inline int32_t number_by_key(const std::vector<uint64_t> &key, std::vector<int32
     return all.count();
 }
 
-// Sets `order` to 0, ..., n - 1 sorted by part_of(i) (parts numbered from 0 to parts - 1),
-// in increasing order within each part, and part_start[p] to the place where part p begins
-// (part_start[parts] = n). A counting sort in `runs` runs of indices, each counted and then
-// dealt in parallel to the places its part has for it; at most two counters per index
-// in all, whatever the number of parts.
-template <class PartOf>
-void sort_into_parts(int32_t n, size_t parts, PartOf &&part_of, int runs, std::vector<int32_t> &part_start,
-                     std::vector<int32_t> &order)
-{
-    const size_t most_runs = std::max<size_t>(1, 2 * static_cast<size_t>(n) / std::max<size_t>(parts, 1));
-    runs = static_cast<int>(std::clamp<size_t>(static_cast<size_t>(runs), 1, most_runs));
-    const auto run_start = [&](int r) { return static_cast<int32_t>(static_cast<int64_t>(n) * r / runs); };
-    // Run r's count of part p, then the place of its next index in part p: at r parts + p.
-    std::vector<int32_t> place(static_cast<size_t>(runs) * parts, 0);
-#pragma omp parallel for num_threads(loop_threads()) schedule(static, 1)
-    for (int r = 0; r < runs; ++r)
-        for (int32_t i = run_start(r), end = run_start(r + 1); i < end; ++i)
-            ++place[static_cast<size_t>(r) * parts + part_of(i)];
-    part_start.assign(parts + 1, 0);
-    int32_t at = 0;
-    for (size_t p = 0; p < parts; ++p) {
-        part_start[p] = at;
-        for (int r = 0; r < runs; ++r) {
-            const int32_t count = place[static_cast<size_t>(r) * parts + p];
-            place[static_cast<size_t>(r) * parts + p] = at;
-            at += count;
-        }
-    }
-    part_start[parts] = at;
-    order.resize(static_cast<size_t>(n));
-#pragma omp parallel for num_threads(loop_threads()) schedule(static, 1)
-    for (int r = 0; r < runs; ++r)
-        for (int32_t i = run_start(r), end = run_start(r + 1); i < end; ++i)
-            order[static_cast<size_t>(place[static_cast<size_t>(r) * parts + part_of(i)]++)] = i;
-}
-
 // Sorts (key, index) pairs, entered in increasing order of index, by key and then index,
 // as std::sort would; the keys must be finite. They are dealt into as many buckets as there
 // are keys, by value (a monotonic function of the key, so that each bucket's keys precede
@@ -343,7 +307,7 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
     const int32_t blocks = detail::number_by_key(key, block_of, loop_threads());
     // Part p of block b is number 8 b + p; its triangles are order[part_start[8 b + p]] on.
     std::vector<int32_t> part_start, order;
-    detail::sort_into_parts(
+    sort_into_parts(
         n, 8 * static_cast<size_t>(blocks),
         [&](int32_t t) { return 8 * static_cast<size_t>(block_of[t]) + octant[t]; }, loop_threads(), part_start,
         order);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <numeric>
 #include <utility>
 
 namespace sfa {
@@ -40,26 +41,39 @@ std::vector<int32_t> morton_order(const std::vector<Vec3> &pos)
     const auto to_cell = [cells](double c) { return c >= 0 ? static_cast<uint64_t>(std::min(c, cells)) : uint64_t{0}; };
     const Vec3 scale = (high - low).cwiseMax(1e-300).cwiseInverse() * cells;
     const int32_t n = static_cast<int32_t>(pos.size());
-    std::vector<std::pair<uint64_t, int32_t>> keyed(n);
+    std::vector<uint64_t> key(n);
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t v = 0; v < n; ++v) {
         const Vec3 cell = (pos[v] - low).cwiseProduct(scale);
-        keyed[v] = {spread_bits(to_cell(cell.x())) | spread_bits(to_cell(cell.y())) << 1 |
-                        spread_bits(to_cell(cell.z())) << 2,
-                    v};
+        key[v] = spread_bits(to_cell(cell.x())) | spread_bits(to_cell(cell.y())) << 1 |
+                 spread_bits(to_cell(cell.z())) << 2;
     }
-    std::sort(keyed.begin(), keyed.end());
-    std::vector<int32_t> order(n);
-    for (int32_t k = 0; k < n; ++k)
-        order[k] = keyed[k].second;
+    // A radix sort, 11 bits a round from the lowest, each round a stable counting sort in
+    // parallel: ties stay in order of number. (std::sort of the pairs took 2.6 ms of each
+    // Enright adaptation at 10^5 vertices, on one thread while the others waited.)
+    constexpr int digit_bits = 11;
+    std::vector<int32_t> order(n), sorted(n), part_start, by_digit;
+    std::iota(order.begin(), order.end(), 0);
+    for (int shift = 0; shift < 3 * bits_per_axis; shift += digit_bits) {
+        sort_into_parts(
+            n, size_t{1} << digit_bits,
+            [&](int32_t k) { return static_cast<size_t>(key[order[k]] >> shift) & ((size_t{1} << digit_bits) - 1); },
+            loop_threads(), part_start, by_digit);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+        for (int32_t k = 0; k < n; ++k)
+            sorted[k] = order[by_digit[k]];
+        order.swap(sorted);
+    }
     return order;
 }
 
 std::vector<int32_t> inverse(const std::vector<int32_t> &order)
 {
+    const int32_t n = static_cast<int32_t>(order.size());
     std::vector<int32_t> map(order.size());
-    for (size_t k = 0; k < order.size(); ++k)
-        map[order[k]] = static_cast<int32_t>(k);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t k = 0; k < n; ++k)
+        map[order[k]] = k;
     return map;
 }
 
@@ -71,17 +85,14 @@ Renumbering order_for_locality(TriMesh &mesh)
     renumbering.vertex_map = inverse(morton_order(mesh.pos));
     const std::vector<int32_t> &vertex_map = renumbering.vertex_map;
     // Triangles by their smallest new vertex, ties by old number: a counting sort.
-    std::vector<int32_t> first_vertex(mesh.tri.size()), start(mesh.pos.size() + 1, 0);
-    for (size_t t = 0; t < mesh.tri.size(); ++t) {
-        const Triangle &c = mesh.tri[t];
-        first_vertex[t] = std::min({vertex_map[c[0]], vertex_map[c[1]], vertex_map[c[2]]});
-        ++start[first_vertex[t] + 1];
-    }
-    for (size_t v = 0; v < mesh.pos.size(); ++v)
-        start[v + 1] += start[v];
-    std::vector<int32_t> triangle_order(mesh.tri.size());
-    for (int32_t t = 0; t < mesh.num_triangles(); ++t)
-        triangle_order[start[first_vertex[t]]++] = t;
+    std::vector<int32_t> triangle_order, start;
+    sort_into_parts(
+        mesh.num_triangles(), mesh.pos.size(),
+        [&](int32_t t) {
+            const Triangle &c = mesh.tri[t];
+            return static_cast<size_t>(std::min({vertex_map[c[0]], vertex_map[c[1]], vertex_map[c[2]]}));
+        },
+        loop_threads(), start, triangle_order);
     renumbering.triangle_map = inverse(triangle_order);
     const auto new_halfedge = [&](int32_t h) { return renumbering.new_halfedge(h); };
 

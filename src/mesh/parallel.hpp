@@ -6,6 +6,7 @@
 // This header sits in the lowest layer because every layer loops.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -139,6 +140,70 @@ T ordered_sum(int32_t count, const T &zero, Term &&term)
     for (const T &sum : partial)
         total += sum;
     return total;
+}
+
+// Sets number[i] to the number of i among the i in [0, count) that keep(i) holds for, in
+// increasing order, or to -1 where it does not; returns how many are kept. Block by block
+// in parallel: each block's count, then where each block's numbers start, then the
+// numbers. keep must not throw.
+template <class Keep>
+int32_t number_kept(int32_t count, Keep &&keep, std::vector<int32_t> &number)
+{
+    constexpr int32_t block = ordered_sum_block;
+    const int32_t blocks = (count + block - 1) / block;
+    number.resize(static_cast<size_t>(count));
+    std::vector<int32_t> start(static_cast<size_t>(blocks) + 1, 0);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t b = 0; b < blocks; ++b)
+        for (int32_t i = b * block; i < count && i < (b + 1) * block; ++i)
+            start[b + 1] += (number[i] = keep(i) ? 1 : -1) > 0;
+    for (int32_t b = 0; b < blocks; ++b)
+        start[b + 1] += start[b];
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t b = 0; b < blocks; ++b) {
+        int32_t next = start[b];
+        for (int32_t i = b * block; i < count && i < (b + 1) * block; ++i)
+            if (number[i] > 0)
+                number[i] = next++;
+    }
+    return start[blocks];
+}
+
+// Sets `order` to 0, ..., n - 1 sorted by part_of(i) (parts numbered from 0 to parts - 1),
+// in increasing order within each part (a stable sort), and part_start[p] to the place
+// where part p begins (part_start[parts] = n). A counting sort in `runs` runs of indices
+// (loop_threads(), say), each counted and then dealt in parallel to the places its part
+// has for it; at most two counters per index in all, whatever the number of parts.
+// part_of must not throw.
+template <class PartOf>
+void sort_into_parts(int32_t n, size_t parts, PartOf &&part_of, int runs, std::vector<int32_t> &part_start,
+                     std::vector<int32_t> &order)
+{
+    const size_t most_runs = std::max<size_t>(1, 2 * static_cast<size_t>(n) / std::max<size_t>(parts, 1));
+    runs = static_cast<int>(std::clamp<size_t>(static_cast<size_t>(runs), 1, most_runs));
+    const auto run_start = [&](int r) { return static_cast<int32_t>(static_cast<int64_t>(n) * r / runs); };
+    // Run r's count of part p, then the place of its next index in part p: at r parts + p.
+    std::vector<int32_t> place(static_cast<size_t>(runs) * parts, 0);
+#pragma omp parallel for num_threads(loop_threads()) schedule(static, 1)
+    for (int r = 0; r < runs; ++r)
+        for (int32_t i = run_start(r), end = run_start(r + 1); i < end; ++i)
+            ++place[static_cast<size_t>(r) * parts + part_of(i)];
+    part_start.assign(parts + 1, 0);
+    int32_t at = 0;
+    for (size_t p = 0; p < parts; ++p) {
+        part_start[p] = at;
+        for (int r = 0; r < runs; ++r) {
+            const int32_t count = place[static_cast<size_t>(r) * parts + p];
+            place[static_cast<size_t>(r) * parts + p] = at;
+            at += count;
+        }
+    }
+    part_start[parts] = at;
+    order.resize(static_cast<size_t>(n));
+#pragma omp parallel for num_threads(loop_threads()) schedule(static, 1)
+    for (int r = 0; r < runs; ++r)
+        for (int32_t i = run_start(r), end = run_start(r + 1); i < end; ++i)
+            order[static_cast<size_t>(place[static_cast<size_t>(r) * parts + part_of(i)]++)] = i;
 }
 
 } // namespace sfa

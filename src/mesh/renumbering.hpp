@@ -3,8 +3,11 @@
 // the data living on its elements must follow it.
 #pragma once
 
+#include "mesh/parallel.hpp"
+
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace sfa {
@@ -22,14 +25,19 @@ struct Renumbering {
 
     // Moves every element's entry of `values` (one per old element) to its new number; gone
     // elements' entries are dropped. `per_element` entries per element (3 for half-edges).
+    // In parallel: each element writes its own entries.
     template <class T>
     void apply(std::vector<T> &values, const std::vector<int32_t> &map, size_t per_element = 1) const
     {
-        size_t count = 0;
-        for (int32_t target : map)
-            count += target >= 0;
-        std::vector<T> out(per_element * count);
-        for (size_t old = 0; old < map.size(); ++old)
+        static_assert(!std::is_same_v<T, bool>, "std::vector<bool> packs its entries: no parallel writes");
+        const int64_t elements = static_cast<int64_t>(map.size());
+        int64_t count = 0;
+#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(+ : count)
+        for (int64_t old = 0; old < elements; ++old)
+            count += map[old] >= 0;
+        std::vector<T> out(per_element * static_cast<size_t>(count));
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+        for (int64_t old = 0; old < elements; ++old)
             if (map[old] >= 0)
                 for (size_t k = 0; k < per_element; ++k)
                     out[per_element * static_cast<size_t>(map[old]) + k] = values[per_element * old + k];

@@ -13,7 +13,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <numeric>
 #include <set>
 #include <setjmp.h>
 #include <utility>
@@ -335,35 +334,6 @@ void keys_are_numbered_in_order_of_first_coming(void **)
     assert_true(number == (std::vector<int32_t>{0, 0, 1}));
 }
 
-// The blocks' parts: sort_into_parts orders the indices as a stable sort by part would,
-// and says where each part begins, however many runs count and deal them, for parts
-// many and few, some empty, and for no index at all.
-void indices_are_sorted_into_parts_stably(void **)
-{
-    Numbers rng{20261205};
-    for (const int32_t n : {0, 1, 5, 1000, 30000})
-        for (const size_t parts : {size_t{1}, size_t{8}, size_t{1000}, size_t{100000}})
-            for (int runs : {1, 2, 5}) {
-                std::vector<size_t> part(static_cast<size_t>(n));
-                for (size_t &p : part)
-                    p = std::min(parts - 1, static_cast<size_t>(rng.uniform(0, static_cast<double>(parts))));
-                std::vector<int32_t> part_start, order, expected(static_cast<size_t>(n));
-                detail::sort_into_parts(
-                    n, parts, [&](int32_t i) { return part[static_cast<size_t>(i)]; }, runs, part_start, order);
-                std::iota(expected.begin(), expected.end(), 0);
-                std::stable_sort(expected.begin(), expected.end(),
-                                 [&](int32_t a, int32_t b) { return part[static_cast<size_t>(a)] < part[static_cast<size_t>(b)]; });
-                if (order != expected)
-                    fail_msg("%d indices, %zu parts, %d runs: not in the order of a stable sort", n, parts, runs);
-                assert_int_equal(part_start.size(), parts + 1);
-                for (size_t p = 0; p < parts; ++p)
-                    for (int32_t at = part_start[p]; at < part_start[p + 1]; ++at)
-                        if (part[static_cast<size_t>(order[static_cast<size_t>(at)])] != p)
-                            fail_msg("%d indices, %zu parts, %d runs: part %zu's run holds another", n, parts, runs, p);
-                assert_int_equal(part_start[parts], n);
-            }
-}
-
 // The sweep's order: sort_spread_keys orders (key, index) pairs as std::sort does, ties by
 // index, for keys spread evenly, keys with many ties, keys crowded into one bucket (which
 // std::sort takes over), keys all one, and keys whose range overflows.
@@ -409,7 +379,6 @@ int main()
         cmocka_unit_test(boxes_that_touch_far_from_the_origin_are_visited),
         cmocka_unit_test(nearest_floats_keep_the_order),
         cmocka_unit_test(keys_are_numbered_in_order_of_first_coming),
-        cmocka_unit_test(indices_are_sorted_into_parts_stably),
         cmocka_unit_test(spread_keys_sort_as_std_sort_does),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
