@@ -154,9 +154,14 @@ int32_t number_kept(int32_t count, Keep &&keep, std::vector<int32_t> &number)
     number.resize(static_cast<size_t>(count));
     std::vector<int32_t> start(static_cast<size_t>(blocks) + 1, 0);
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t b = 0; b < blocks; ++b)
-        for (int32_t i = b * block; i < count && i < (b + 1) * block; ++i)
-            start[b + 1] += (number[i] = keep(i) ? 1 : -1) > 0;
+    for (int32_t b = 0; b < blocks; ++b) {
+        int32_t kept = 0;
+        for (int32_t i = b * block; i < count && i < (b + 1) * block; ++i) {
+            number[i] = keep(i) ? 1 : -1; // 1: kept, numbered below
+            kept += number[i] > 0;
+        }
+        start[b + 1] = kept;
+    }
     for (int32_t b = 0; b < blocks; ++b)
         start[b + 1] += start[b];
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
