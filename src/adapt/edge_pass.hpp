@@ -113,8 +113,8 @@ int32_t run_edge_pass(MeshEdit &edit, Operation &operation)
         // judged again in the serial phase, once that one is made: its plan ahead would be
         // thrown away. (Contraction on Enright: of 139k candidates, 91.5k were planned again,
         // every one with an earlier candidate within three edges, and only 0.4k others had
-        // one.) So it is planned there only. Finding them looks at every vertex: where the candidates are few
-        // (fewer than one in 16 vertices), all are planned ahead.
+        // one.) So it is planned there only. Finding them looks at every vertex: where the
+        // candidates are few (fewer than one in 16 vertices), all are planned ahead.
         const bool few = static_cast<int64_t>(count) * 16 < mesh.num_vertices();
         const std::vector<int32_t> earliest =
             few ? std::vector<int32_t>() : earliest_candidate_near(mesh, candidates, Operation::changes_reach);

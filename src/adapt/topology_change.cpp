@@ -157,21 +157,21 @@ std::vector<MergeCandidate> Surgery::merge_candidates() const
     const int32_t edge_count = static_cast<int32_t>(edges.size());
     std::vector<int16_t> normal_class(edges.size());
     std::vector<Box> boxes(edges.size());
+    std::vector<double> extent(edges.size()); // its length and d, for the grid's cells
     const bool uniform = data_.size.empty();
     const double uniform_distance = ratio_ * 0.5 * (l_ + l_); // merge_distance's, without a size field
     const auto distance_of = [&](int32_t a, int32_t b) { return uniform ? uniform_distance : merge_distance(a, b); };
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t e = 0; e < edge_count; ++e) {
         const int32_t h = edges[e], a = mesh_.tail(h), b = mesh_.head(h);
-        const Vec3 grow = Vec3::Constant(0.5 * distance_of(a, b));
+        const double d = distance_of(a, b);
+        const Vec3 grow = Vec3::Constant(0.5 * d);
         normal_class[e] = static_cast<int16_t>(
             classes.of(face_normals[TriMesh::face(h)] + face_normals[TriMesh::face(mesh_.opp[h])]));
         boxes[e] = {pos_[a].cwiseMin(pos_[b]) - grow, pos_[a].cwiseMax(pos_[b]) + grow};
+        extent[e] = (pos_[b] - pos_[a]).norm() + d;
     }
-    double cell = ordered_sum(edge_count, 0.0, [&](int32_t e) {
-        const int32_t a = mesh_.tail(edges[e]), b = mesh_.head(edges[e]);
-        return (pos_[b] - pos_[a]).norm() + distance_of(a, b);
-    });
+    double cell = ordered_sum(edge_count, 0.0, [&](int32_t e) { return extent[e]; });
     const size_t count = edges.size();
     if (count < 2 || !(cell > 0))
         return {};
