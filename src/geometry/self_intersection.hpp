@@ -11,8 +11,8 @@ namespace sfa {
 
 // The number of pairs of triangles that share no vertex yet intersect (touching counts;
 // decided exactly, geometry/triangle_intersection.hpp).
-// Pairs are found through the spatial grid, cells of twice the mean edge length; the count is
-// the same for any number of threads.
+// Pairs are found through collision-safe motion's broad phase at rest (swept_pairs.hpp); the
+// count is the same for any number of threads.
 int32_t self_intersection_count(const TriMesh &mesh);
 
 } // namespace sfa
