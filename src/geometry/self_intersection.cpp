@@ -18,9 +18,9 @@ int32_t self_intersection_count(const TriMesh &mesh)
         return 0;
     // The pairs come from collision-safe motion's broad phase with the triangles at rest,
     // as the crossing guard's faces_meeting takes them: it passes over the pairs that share
-    // a corner (most pairs whose boxes overlap) four lanes at once. A grid of boxes, cells
-    // of twice the mean edge, took twice the time (a twentieth of a flow's run, where the
-    // tool counts crossings every 20 steps).
+    // a corner (most pairs whose boxes overlap) four lanes at once, and has no serial loop.
+    // A grid of boxes in cells of twice the mean edge took 1.5 times as long on two threads
+    // (29 ms against 20 ms for a sphere of 129k triangles), 1.15 times on one.
     FillBuffer<SweptTriangle> at_rest(static_cast<size_t>(n));
     const Vec3 still[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
