@@ -77,19 +77,46 @@ double surface_area(const TriMesh &mesh)
 
 AngleRange angle_range(const TriMesh &mesh)
 {
-    // min and max are exact: the same for any number of threads.
-    double smallest = std::numeric_limits<double>::infinity(), largest = 0;
-#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(min : smallest) reduction(max : largest)
-    for (int32_t k = 0; k < mesh.num_triangles(); ++k) {
+    // The angles' arc tangents are what took the time (13 ms for 193k triangles on two
+    // cores): so a first pass finds the largest and smallest cosine of any corner, and a
+    // second takes the arc tangent only of the corners whose cosine is within 1e-12 of
+    // either. Rounding can put two cosines in the other order than their angles only where
+    // the angles differ by a few units in the last place, when the cosines differ by far
+    // less than that margin. A corner whose cosine is not finite (an edge of zero length,
+    // or lengths whose squares underflow) counts in neither extreme and is always taken.
+    // So the extremes are those of every corner's arc tangent, to the last bit. Minima and
+    // maxima are exact: the same for any number of threads.
+    const auto corner_cos = [](const Vec3 &u, const Vec3 &w) {
+        return u.dot(w) / std::sqrt(u.squaredNorm() * w.squaredNorm());
+    };
+    const auto for_each_corner = [&](int32_t k, auto &&visit) {
         const Triangle &t = mesh.tri[k];
         for (int i = 0; i < 3; ++i) {
             const Vec3 &corner = mesh.pos[t[i]];
-            const double angle =
-                angle_between(mesh.pos[t[(i + 1) % 3]] - corner, mesh.pos[t[(i + 2) % 3]] - corner);
-            smallest = std::min(smallest, angle);
-            largest = std::max(largest, angle);
+            visit(mesh.pos[t[(i + 1) % 3]] - corner, mesh.pos[t[(i + 2) % 3]] - corner);
         }
-    }
+    };
+    double most_cos = -2, least_cos = 2;
+#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(max : most_cos) reduction(min : least_cos)
+    for (int32_t k = 0; k < mesh.num_triangles(); ++k)
+        for_each_corner(k, [&](const Vec3 &u, const Vec3 &w) {
+            if (const double c = corner_cos(u, w); std::isfinite(c)) {
+                most_cos = std::max(most_cos, c);
+                least_cos = std::min(least_cos, c);
+            }
+        });
+    constexpr double margin = 1e-12;
+    double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(min : smallest) reduction(max : largest)
+    for (int32_t k = 0; k < mesh.num_triangles(); ++k)
+        for_each_corner(k, [&](const Vec3 &u, const Vec3 &w) {
+            const double c = corner_cos(u, w);
+            const bool unknown = !std::isfinite(c);
+            if (unknown || c >= most_cos - margin)
+                smallest = std::min(smallest, angle_between(u, w));
+            if (unknown || c <= least_cos + margin)
+                largest = std::max(largest, angle_between(u, w));
+        });
     return AngleRange{smallest * degrees_per_radian, largest * degrees_per_radian};
 }
 
