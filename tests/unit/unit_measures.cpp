@@ -12,9 +12,11 @@
 #include "geometry/triangle_intersection.hpp"
 #include "mesh/validate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstddef>
+#include <limits>
 #include <setjmp.h>
 #include <vector>
 
@@ -104,7 +106,7 @@ void the_angle_range_is_every_corners_to_the_last_bit(void **)
     // Degenerate triangles cannot be given to sfa_set_mesh, but motion and smoothing can
     // make them: the positions are changed after the mesh is built.
     const TriMesh flat = validated_mesh(MeshInput{grid.nverts, grid.xyz, grid.ntris, grid.tris, 0, false});
-    // At 1e-170 every squared length underflows: no corner's cosine is a number.
+    // At 1e-170 every squared length underflows: no corner's cosine is finite.
     for (const double scale : {1.0, 1e-40, 1e40, 1e-170})
         for (const Case &c : cases) {
             TriMesh mesh = flat;
