@@ -213,13 +213,9 @@ std::vector<char> CrossingGuard::faces_meeting(const TriMesh &mesh, const std::v
     // pairs of overlapping boxes took twice the instructions.
     const size_t n = faces_.size();
     std::vector<SweptTriangle> at_rest(n);
-    const Vec3 still[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (size_t m = 0; m < n; ++m) {
-        const Triangle &t = mesh.tri[faces_[m]];
-        const Vec3 corner[3] = {pos[t[0]], pos[t[1]], pos[t[2]]};
-        at_rest[m] = swept_triangle(t, corner, still);
-    }
+    for (size_t m = 0; m < n; ++m)
+        at_rest[m] = resting_triangle(mesh.tri[faces_[m]], pos);
     std::vector<std::atomic<char>> met(n);
     for (std::atomic<char> &m : met)
         m.store(0, std::memory_order_relaxed);

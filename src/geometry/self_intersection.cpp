@@ -23,13 +23,9 @@ int32_t self_intersection_count(const TriMesh &mesh)
     // threads (113 against 50 on one) for the Enright surface at t = 1.5, 193k triangles
     // in a sheet thinner than its edges, and 29 against 20 ms for a sphere of 129k.
     FillBuffer<SweptTriangle> at_rest(static_cast<size_t>(n));
-    const Vec3 still[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t t = 0; t < n; ++t) {
-        const Triangle &c = mesh.tri[t];
-        const Vec3 corner[3] = {mesh.pos[c[0]], mesh.pos[c[1]], mesh.pos[c[2]]};
-        at_rest[t] = swept_triangle(c, corner, still);
-    }
+    for (int32_t t = 0; t < n; ++t)
+        at_rest[t] = resting_triangle(mesh.tri[t], mesh.pos);
     std::vector<int32_t> per_thread(static_cast<size_t>(loop_threads()), 0);
     for_each_pair_that_may_meet(at_rest, [&](int32_t s, int32_t t, int thread) {
         const Triangle &p = mesh.tri[s], &q = mesh.tri[t];

@@ -47,6 +47,15 @@ inline SweptTriangle swept_triangle(const Triangle &corners, const Vec3 (&x)[3],
     return s;
 }
 
+// Triangle `corners` at rest at `pos`: for the broad phase's pairs of a surface that does
+// not move (the crossing guard's faces_meeting, the self-intersection count).
+inline SweptTriangle resting_triangle(const Triangle &corners, const std::vector<Vec3> &pos)
+{
+    const Vec3 x[3] = {pos[corners[0]], pos[corners[1]], pos[corners[2]]};
+    const Vec3 still[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+    return swept_triangle(corners, x, still);
+}
+
 // The box a triangle sweeps in the frame displaced by w over the step: its start box and
 // its start box moved by its corners' displacements less w, widened by the rounding of
 // the sums (a pair that touches within round-off must not fall between two boxes).
