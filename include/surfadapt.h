@@ -544,6 +544,7 @@ int sfa_set_velocities(sfa_surface *s, const double *vel);
  * sfa_set_velocities() for an array made for `nverts` vertices: ::SFA_ERR_ARGUMENT, with
  * a message that says both counts, when the mesh has another number of vertices (a stale
  * array from before an sfa_adapt() call). Nothing else differs.
+ * @return as sfa_set_velocities(), and ::SFA_ERR_ARGUMENT for another vertex count.
  * @param s      the surface.
  * @param nverts the number of vertices `vel` holds velocities for.
  * @param vel    `3*nverts` velocity components (read only, not kept).
@@ -751,6 +752,10 @@ int sfa_set_size_field(sfa_surface *s, const double *edge_length);
  * sfa_set_size_field() for an array made for `nverts` vertices: ::SFA_ERR_ARGUMENT when
  * the mesh has another number of vertices. With `edge_length` NULL it clears, as
  * sfa_set_size_field() does.
+ * @param s           the surface.
+ * @param nverts      the number of vertices `edge_length` was made for.
+ * @param edge_length `nverts` lengths > 0, or NULL (see sfa_set_size_field()).
+ * @return as sfa_set_size_field(), and ::SFA_ERR_ARGUMENT for another vertex count.
  */
 int sfa_set_size_field_checked(sfa_surface *s, int32_t nverts, const double *edge_length);
 
@@ -814,6 +819,12 @@ int sfa_add_face_field(sfa_surface *s, int32_t ncomp, const double *values, int3
 /**
  * sfa_add_face_field() for an array made for `ntris` triangles: ::SFA_ERR_ARGUMENT when
  * the mesh has another number of triangles.
+ * @param s        the surface.
+ * @param ntris    the number of triangles `values` was made for.
+ * @param ncomp    components per triangle, >= 1.
+ * @param values   `ncomp*ntris` densities (read only, not kept); finite.
+ * @param field_id receives the id (see sfa_add_face_field()).
+ * @return as sfa_add_face_field(), and ::SFA_ERR_ARGUMENT for another triangle count.
  */
 int sfa_add_face_field_checked(sfa_surface *s, int32_t ntris, int32_t ncomp, const double *values,
                                int32_t *field_id);
@@ -828,6 +839,21 @@ int sfa_add_face_field_checked(sfa_surface *s, int32_t ntris, int32_t ncomp, con
  *         nothing written), ::SFA_ERR_STATE (no mesh).
  */
 int sfa_get_face_field(const sfa_surface *s, int32_t field_id, int32_t capacity, double *values);
+
+/**
+ * Replaces a face field's densities on the current triangles, e.g. after the host has
+ * advanced the quantity they hold over a time step (a surfactant transported and diffused
+ * on the surface). From then on sfa_smooth() and sfa_adapt() keep the integral of the new
+ * values.
+ * @param s        the surface.
+ * @param field_id an id from sfa_add_face_field().
+ * @param ntris    the number of triangles `values` was made for: the mesh's count.
+ * @param values   `ncomp*ntris` densities of the field's ncomp (read only, not kept); finite.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, unknown id, `ntris` not the mesh's),
+ *         ::SFA_ERR_STATE (no mesh), ::SFA_ERR_NUMERIC (a non-finite value; names the
+ *         triangle), ::SFA_ERR_MEMORY; on any error the field is unchanged.
+ */
+int sfa_set_face_field(sfa_surface *s, int32_t field_id, int32_t ntris, const double *values);
 
 /**
  * Where each current vertex came from: the triangle of the mesh as it was just before the
@@ -917,6 +943,7 @@ int sfa_add_field(sfa_surface *s, int32_t ncomp, const double *values, int32_t *
  * @param ncomp    components per vertex, >= 1.
  * @param values   `ncomp*nverts` values (read only, not kept); finite.
  * @param field_id receives the id of the field.
+ * @return as sfa_add_field(), and ::SFA_ERR_ARGUMENT for another vertex count.
  */
 int sfa_add_field_checked(sfa_surface *s, int32_t nverts, int32_t ncomp, const double *values, int32_t *field_id);
 
@@ -930,6 +957,19 @@ int sfa_add_field_checked(sfa_surface *s, int32_t nverts, int32_t ncomp, const d
  *         nothing written), ::SFA_ERR_STATE (no mesh).
  */
 int sfa_get_field(const sfa_surface *s, int32_t field_id, int32_t capacity, double *values);
+
+/**
+ * Replaces a field's values on the current vertices, e.g. after the host has advanced the
+ * quantity it holds over a time step.
+ * @param s        the surface.
+ * @param field_id an id from sfa_add_field().
+ * @param nverts   the number of vertices `values` was made for: the mesh's count.
+ * @param values   `ncomp*nverts` values of the field's ncomp (read only, not kept); finite.
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL pointer, unknown id, `nverts` not the mesh's),
+ *         ::SFA_ERR_STATE (no mesh), ::SFA_ERR_NUMERIC (a non-finite value; names the
+ *         vertex), ::SFA_ERR_MEMORY; on any error the field is unchanged.
+ */
+int sfa_set_field(sfa_surface *s, int32_t field_id, int32_t nverts, const double *values);
 
 /* ---------------------------------------------------------------- plugins */
 
@@ -994,6 +1034,10 @@ typedef struct sfa_api {
                           double *values);                    /**< sfa_get_face_field() */
     int (*get_vertex_origins)(const sfa_surface *s, int32_t capacity, int32_t *triangle, double *barycentric,
                               int32_t index_base);            /**< sfa_get_vertex_origins() */
+    int (*set_field)(sfa_surface *s, int32_t field_id, int32_t nverts,
+                     const double *values);                   /**< sfa_set_field() */
+    int (*set_face_field)(sfa_surface *s, int32_t field_id, int32_t ntris,
+                          const double *values);              /**< sfa_set_face_field() */
 } sfa_api;
 
 /**

@@ -96,11 +96,11 @@ module surfadapt
   public :: sfa_smooth, sfa_adapt
   public :: sfa_get_feature_ranks, sfa_measure
   public :: sfa_get_component_count, sfa_get_components, sfa_measure_component
-  public :: sfa_add_field, sfa_get_field
+  public :: sfa_add_field, sfa_get_field, sfa_set_field
   public :: sfa_set_velocities_checked, sfa_add_field_checked
   public :: sfa_set_size_field, sfa_set_size_field_checked, sfa_clear_size_field
   public :: sfa_set_fixed_vertices, sfa_set_required_edges
-  public :: sfa_add_face_field, sfa_add_face_field_checked, sfa_get_face_field
+  public :: sfa_add_face_field, sfa_add_face_field_checked, sfa_get_face_field, sfa_set_face_field
   public :: sfa_get_vertex_origins
   public :: sfa_get_vertex_frames, sfa_get_ridge_edges
   public :: sfa_get_api
@@ -393,6 +393,15 @@ module surfadapt
       integer(c_int) :: sfa_get_face_field
     end function sfa_get_face_field
 
+    !> Replaces a face field's densities (ncomp*ntris, ntris the mesh's triangle count).
+    function sfa_set_face_field(s, field_id, ntris, values) bind(C, name='sfa_set_face_field')
+      import :: c_int, c_int32_t, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: field_id, ntris
+      real(c_double), intent(in) :: values(*)
+      integer(c_int) :: sfa_set_face_field
+    end function sfa_set_face_field
+
     !> For each vertex, the triangle of the mesh before the last sfa_smooth/sfa_adapt it lay
     !> over (triangle(nverts), from index_base) and its coordinates there (barycentric(3, nverts)).
     function sfa_get_vertex_origins(s, capacity, triangle, barycentric, index_base) &
@@ -414,6 +423,15 @@ module surfadapt
       real(c_double), intent(out) :: values(*)
       integer(c_int) :: sfa_get_field
     end function sfa_get_field
+
+    !> Replaces a field's values (ncomp*nverts, nverts the mesh's vertex count).
+    function sfa_set_field(s, field_id, nverts, values) bind(C, name='sfa_set_field')
+      import :: c_int, c_int32_t, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int32_t), value :: field_id, nverts
+      real(c_double), intent(in) :: values(*)
+      integer(c_int) :: sfa_set_field
+    end function sfa_set_field
 
     !> Per-vertex normals (3,n), long directions (3,n) and metric aspect ratios (n).
     !> The C function accepts NULL for outputs not wanted; this interface asks for all three.

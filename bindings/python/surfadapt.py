@@ -228,6 +228,8 @@ _PROTOTYPES = {
     "sfa_measure_component": (_int, [_handle, _i32, _int, _double_p]),
     "sfa_add_field_checked": (_int, [_handle, _i32, _i32, _double_p, _int32_p]),
     "sfa_get_field": (_int, [_handle, _i32, _i32, _double_p]),
+    "sfa_set_field": (_int, [_handle, _i32, _i32, _double_p]),
+    "sfa_set_face_field": (_int, [_handle, _i32, _i32, _double_p]),
 }
 
 
@@ -690,6 +692,11 @@ class Surface:
         return self._get(field_id, self._vertex_fields, self.nverts, self._lib.sfa_get_field, "sfa_get_field",
                          "vertex field")
 
+    def set_field(self, field_id, values):
+        """sfa_set_field(): replaces the field's values on the n current vertices (after
+        the host advanced them over a step), in the shape the field was added in."""
+        self._set(field_id, values, self._vertex_fields, self._lib.sfa_set_field, "sfa_set_field", "vertex field")
+
     def add_face_field(self, values):
         """sfa_add_face_field_checked(): densities (m,) or (m, k) per unit area for the m
         current triangles; returns the face field's id (a sequence of its own)."""
@@ -700,6 +707,12 @@ class Surface:
         """sfa_get_face_field(): the densities on the current triangles."""
         return self._get(field_id, self._face_fields, self.ntris, self._lib.sfa_get_face_field,
                          "sfa_get_face_field", "face field")
+
+    def set_face_field(self, field_id, values):
+        """sfa_set_face_field(): replaces the densities on the m current triangles; from
+        then on smoothing and adaptation keep the new integrals."""
+        self._set(field_id, values, self._face_fields, self._lib.sfa_set_face_field, "sfa_set_face_field",
+                  "face field")
 
     def _add(self, values, known, function, name):
         """A vertex or face field added through its _checked function; its width and shape
@@ -721,6 +734,18 @@ class Surface:
         out = np.empty((rows, ncomp), np.float64)
         self._check(function(h, int(field_id), out.size, _dp(out)), name)
         return out[:, 0].copy() if flat else out
+
+    def _set(self, field_id, values, known, function, name, what):
+        h = self._handle()
+        if field_id not in known:
+            raise ArgumentError(Status.ERR_ARGUMENT, f"{name}: no {what} {field_id!r} on this mesh "
+                                f"(ids: {sorted(known)})", name)
+        ncomp, flat = known[field_id]
+        v = _doubles(values, "values")
+        if (v.ndim == 1) != flat or (not flat and v.shape[1] != ncomp):
+            raise ValueError(f"values must have the shape the {what} was added in, "
+                             f"{'(n,)' if flat else f'(n, {ncomp})'}; got {v.shape}")
+        self._check(function(h, int(field_id), v.shape[0], _dp(v)), name)
 
     # ---------------------------------------------------------------- host control
     def set_size_field(self, edge_length):

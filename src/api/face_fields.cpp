@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Face fields: sfa_add_face_field, sfa_add_face_field_checked, sfa_get_face_field (carried
-// by fields/face_values.hpp).
+// Face fields: sfa_add_face_field, sfa_add_face_field_checked, sfa_get_face_field,
+// sfa_set_face_field (carried by fields/face_values.hpp).
 #include "api/field_arrays.hpp"
 
 using namespace sfa;
@@ -31,6 +31,15 @@ SFA_EXPORT int sfa_get_face_field(const sfa_surface *s, int32_t field_id, int32_
         require(values != nullptr, "values is NULL");
         require_mesh(s);
         copy_field_out(s->face_fields, "face field", field_id, capacity, values);
+    });
+}
+
+SFA_EXPORT int sfa_set_face_field(sfa_surface *s, int32_t field_id, int32_t ntris, const double *values)
+{
+    return call(s, "sfa_set_face_field", [&] {
+        require_mesh(s);
+        require_count(s, "triangles", s->mesh.num_triangles(), ntris);
+        replace_field_values(s->face_fields, "face field", field_id, values, ntris, s->index_base, "triangle");
     });
 }
 

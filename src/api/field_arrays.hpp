@@ -34,10 +34,8 @@ inline void add_field_to(std::vector<VertexField> &fields, int32_t ncomp, const 
     *field_id = static_cast<int32_t>(fields.size()) - 1;
 }
 
-// Copies field `field_id` of `fields` out (`values` not NULL); `kind` names the list
-// ("field", "face field").
-inline void copy_field_out(const std::vector<VertexField> &fields, const char *kind, int32_t field_id,
-                           int32_t capacity, double *values)
+// Field `field_id` of `fields`; `kind` names the list ("field", "face field") in the error.
+template <class Fields> auto &field_with_id(Fields &fields, const char *kind, int32_t field_id)
 {
     if (field_id < 0 || field_id >= static_cast<int32_t>(fields.size())) {
         char message[120];
@@ -45,7 +43,15 @@ inline void copy_field_out(const std::vector<VertexField> &fields, const char *k
                       static_cast<int>(fields.size()), kind);
         fail(Status::argument, message);
     }
-    const VertexField &field = fields[field_id];
+    return fields[field_id];
+}
+
+// Copies field `field_id` of `fields` out (`values` not NULL); `kind` names the list
+// ("field", "face field").
+inline void copy_field_out(const std::vector<VertexField> &fields, const char *kind, int32_t field_id,
+                           int32_t capacity, double *values)
+{
+    const VertexField &field = field_with_id(fields, kind, field_id);
     if (capacity < 0 || static_cast<size_t>(capacity) < field.values.size()) {
         char message[140];
         std::snprintf(message, sizeof message, "capacity too small: %s %d has %zu values, room was given for %d", kind,
@@ -53,6 +59,16 @@ inline void copy_field_out(const std::vector<VertexField> &fields, const char *k
         fail(Status::argument, message);
     }
     std::copy(field.values.begin(), field.values.end(), values);
+}
+
+// Replaces the values of field `field_id` of `fields` by the checked copy of the host's
+// `elements` values per component; unchanged if anything is wrong.
+inline void replace_field_values(std::vector<VertexField> &fields, const char *kind, int32_t field_id,
+                                 const double *values, int32_t elements, int32_t index_base, const char *element)
+{
+    require(values != nullptr, "values is NULL");
+    VertexField &field = field_with_id(fields, kind, field_id);
+    field = checked_field(field.ncomp, values, elements, index_base, element);
 }
 
 inline int32_t vertex_count(const sfa_surface *s) { return s->mesh.num_vertices(); }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Vertex fields: sfa_add_field, sfa_add_field_checked, sfa_get_field.
+// Vertex fields: sfa_add_field, sfa_add_field_checked, sfa_get_field, sfa_set_field.
 #include "api/field_arrays.hpp"
 
 using namespace sfa;
@@ -30,6 +30,15 @@ SFA_EXPORT int sfa_get_field(const sfa_surface *s, int32_t field_id, int32_t cap
         require(values != nullptr, "values is NULL");
         require_mesh(s);
         copy_field_out(s->fields, "field", field_id, capacity, values);
+    });
+}
+
+SFA_EXPORT int sfa_set_field(sfa_surface *s, int32_t field_id, int32_t nverts, const double *values)
+{
+    return call(s, "sfa_set_field", [&] {
+        require_mesh(s);
+        require_count(s, "vertices", s->mesh.num_vertices(), nverts);
+        replace_field_values(s->fields, "field", field_id, values, nverts, s->index_base, "vertex");
     });
 }
 

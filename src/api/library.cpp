@@ -103,6 +103,8 @@ SFA_EXPORT const sfa_api *sfa_get_api(uint32_t abi_version)
         sfa_add_face_field_checked,
         sfa_get_face_field,
         sfa_get_vertex_origins,
+        sfa_set_field,
+        sfa_set_face_field,
     };
     return abi_version == 1 ? &table_v1 : nullptr;
 }

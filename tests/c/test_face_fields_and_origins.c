@@ -131,6 +131,65 @@ static void bad_face_fields_are_refused(void **state)
     mesh_free(&cube);
 }
 
+/* sfa_set_face_field: a host that has advanced its densities over a step (a surfactant
+ * produced on one bubble) replaces them, and from then on sfa_adapt() keeps the new
+ * integrals, sphere by sphere, to 1e-12. A bad replacement names what is wrong and leaves
+ * the field as it was. */
+static void replaced_face_field_is_what_is_kept(void **state)
+{
+    (void)state;
+    sfa_mesh_data m = shape_jittered_icosphere(3, 1.0, 0.2, 5);
+    sfa_mesh_data small = shape_icosphere(2, 0.4);
+    const double shift[3] = {3, 0, 0};
+    mesh_translate(&small, shift);
+    mesh_append(&m, &small);
+    mesh_free(&small);
+    sfa_surface *s = make_surface(&m, 1);
+    double *density = malloc(sizeof(double) * (size_t)m.ntris);
+    for (int32_t t = 0; t < m.ntris; ++t)
+        density[t] = 1;
+    int32_t id = -1;
+    assert_ok(s, sfa_add_face_field_checked(s, m.ntris, 1, density, &id));
+    int32_t *of = malloc(sizeof(int32_t) * (size_t)m.nverts);
+    assert_ok(s, sfa_get_components(s, m.nverts, of));
+    for (int32_t t = 0; t < m.ntris; ++t)
+        density[t] = of[m.tris[3 * t]] == 0 ? 2 + m.xyz[3 * m.tris[3 * t]] : 5;
+    assert_ok(s, sfa_set_face_field(s, id, m.ntris, density));
+    const double kept[2] = {integral(&m, density, 1, 0, of, 0), integral(&m, density, 1, 0, of, 1)};
+
+    density[7] = INFINITY;
+    assert_error(s, sfa_set_face_field(s, id, m.ntris, density), SFA_ERR_NUMERIC, "triangle 8", "non-finite");
+    density[7] = 1;
+    assert_error(s, sfa_set_face_field(s, id, m.ntris - 1, density), SFA_ERR_ARGUMENT, "the array given has");
+    assert_error(s, sfa_set_face_field(s, id + 1, m.ntris, density), SFA_ERR_ARGUMENT, "unknown face field id 1");
+    assert_error(s, sfa_set_face_field(s, id, m.ntris, NULL), SFA_ERR_ARGUMENT, "values is NULL");
+    double *back = read_face_field(s, id, 1);
+    for (int32_t t = 0; t < m.ntris; ++t)
+        density[t] = of[m.tris[3 * t]] == 0 ? 2 + m.xyz[3 * m.tris[3 * t]] : 5;
+    assert_memory_equal(back, density, sizeof(double) * (size_t)m.ntris);
+    free(back);
+
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, 0.08));
+    assert_ok(s, sfa_adapt(s));
+    sfa_mesh_data now = read_back(s);
+    double *d = read_face_field(s, id, 1);
+    int32_t *parts = malloc(sizeof(int32_t) * (size_t)now.nverts);
+    assert_ok(s, sfa_get_components(s, now.nverts, parts));
+    assert_true(now.ntris > m.ntris);
+    for (int part = 0; part < 2; ++part) {
+        const double after = integral(&now, d, 1, 0, parts, part);
+        if (!(fabs(after - kept[part]) <= 1e-12 * fabs(kept[part])))
+            fail_msg("sphere %d: integral %.17g after sfa_adapt, %.17g when set", part, after, kept[part]);
+    }
+    free(parts);
+    free(d);
+    mesh_free(&now);
+    free(of);
+    free(density);
+    sfa_destroy(s);
+    mesh_free(&m);
+}
+
 /* A flat square with jittered vertices (z = 0.25), refined and smoothed: every vertex of the
  * result is reproduced from its origin, the old triangle's corners weighted by the
  * barycentric coordinates, to 1e-12. */
@@ -236,6 +295,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(face_field_integrals_are_kept_per_component),
         cmocka_unit_test(bad_face_fields_are_refused),
+        cmocka_unit_test(replaced_face_field_is_what_is_kept),
         cmocka_unit_test(origins_reproduce_every_vertex_on_a_plane),
         cmocka_unit_test(origins_carry_a_linear_function_to_second_order_on_a_sphere),
     };

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* Vertex fields: attach, read back, bad input, and what other calls do to them. */
+/* Vertex fields: attach, read back, replace, bad input, and what other calls do to them. */
 #include "support/testing.h"
 
 #define SENTINEL_BYTE 0x5A
@@ -194,6 +194,75 @@ static void unchanged_by_motion(void **state)
     mesh_free(&sphere);
 }
 
+/* sfa_set_field: a host replaces a field's values after it has advanced them over a step.
+ * The new values are what it reads back and what sfa_adapt() carries: a constant set
+ * over a field that held something else stays that constant at every vertex a refinement
+ * makes. */
+static void set_field_replaces_what_is_carried(void **state)
+{
+    (void)state;
+    sfa_mesh_data sphere = shape_icosphere(2, 1.0);
+    sfa_surface *s = make_surface(&sphere, 0);
+    int32_t n = sphere.nverts;
+    double *values = malloc(sizeof(double) * 2 * (size_t)n), *back = malloc(sizeof(double) * 2 * (size_t)n);
+    assert_non_null(values);
+    assert_non_null(back);
+    values_for(n, 2, 4, values);
+    int32_t id = -1;
+    assert_ok(s, sfa_add_field(s, 2, values, &id));
+    for (int32_t v = 0; v < n; ++v) {
+        values[2 * v] = 7;
+        values[2 * v + 1] = -3;
+    }
+    assert_ok(s, sfa_set_field(s, id, n, values));
+    assert_ok(s, sfa_get_field(s, id, 2 * n, back));
+    assert_memory_equal(back, values, sizeof(double) * 2 * (size_t)n);
+
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, 0.1));
+    assert_ok(s, sfa_adapt(s));
+    int32_t after = 0;
+    assert_ok(s, sfa_get_counts(s, &after, NULL));
+    assert_true(after > 2 * n);
+    back = realloc(back, sizeof(double) * 2 * (size_t)after);
+    assert_non_null(back);
+    assert_ok(s, sfa_get_field(s, id, 2 * after, back));
+    for (int32_t v = 0; v < after; ++v)
+        if (!(fabs(back[2 * v] - 7) <= 1e-12 && fabs(back[2 * v + 1] + 3) <= 1e-12))
+            fail_msg("vertex %d carries (%.17g, %.17g), not (7, -3)", (int)v, back[2 * v], back[2 * v + 1]);
+    free(values);
+    free(back);
+    sfa_destroy(s);
+    mesh_free(&sphere);
+}
+
+/* A bad replacement names what is wrong and changes nothing, the field included. */
+static void bad_set_field_changes_nothing(void **state)
+{
+    (void)state;
+    sfa_mesh_data cube = shape_unit_cube();
+    sfa_surface *s = make_surface(&cube, 1);
+    double values[24];
+    values_for(8, 3, 2, values);
+    int32_t id = -1;
+    assert_ok(s, sfa_add_field(s, 3, values, &id));
+    values_for(8, 3, -1, values);
+    values[3 * 5 + 1] = NAN;
+    expect_unchanged(s, sfa_set_field(s, id, 8, values), SFA_ERR_NUMERIC, "vertex 6", "non-finite");
+    values[3 * 5 + 1] = 0;
+    expect_unchanged(s, sfa_set_field(s, id, 7, values), SFA_ERR_ARGUMENT,
+                     "the mesh has 8 vertices since the last sfa_set_mesh", "the array given has 7");
+    expect_unchanged(s, sfa_set_field(s, id + 1, 8, values), SFA_ERR_ARGUMENT, "unknown field id 1");
+    expect_unchanged(s, sfa_set_field(s, -1, 8, values), SFA_ERR_ARGUMENT, "unknown field id -1");
+    expect_unchanged(s, sfa_set_field(s, id, 8, NULL), SFA_ERR_ARGUMENT, "values is NULL");
+    assert_int_equal(sfa_set_field(NULL, id, 8, values), SFA_ERR_ARGUMENT);
+    sfa_destroy(s);
+    mesh_free(&cube);
+
+    assert_int_equal(sfa_create(&s), SFA_OK);
+    assert_error(s, sfa_set_field(s, 0, 8, values), SFA_ERR_STATE, "no mesh");
+    sfa_destroy(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -205,6 +274,8 @@ int main(void)
         cmocka_unit_test(no_mesh_is_state_error),
         cmocka_unit_test(dropped_by_set_mesh),
         cmocka_unit_test(unchanged_by_motion),
+        cmocka_unit_test(set_field_replaces_what_is_carried),
+        cmocka_unit_test(bad_set_field_changes_nothing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -320,6 +320,14 @@ program test_surfadapt
        rc == SFA_ERR_ARGUMENT)
   rc = sfa_get_field_alloc(s, field_id + 1, 2_c_int32_t, field_out)
   call check('an unknown field id gives SFA_ERR_ARGUMENT', rc == SFA_ERR_ARGUMENT)
+  ! The host replaces the values (as after a step of its own) and reads the new ones back.
+  field = 2 * field
+  rc = sfa_set_field(s, field_id, nv, field)
+  call check('sfa_set_field', rc == SFA_OK, sfa_error_message(s))
+  rc = sfa_get_field_alloc(s, field_id, 2_c_int32_t, field_out)
+  call check('sfa_set_field replaced the values', rc == SFA_OK .and. max_abs_diff(field_out, field) <= 0)
+  rc = sfa_set_field(s, field_id, nv - 1, field)
+  call check('sfa_set_field for another vertex count gives SFA_ERR_ARGUMENT', rc == SFA_ERR_ARGUMENT)
 
   ! ------------------------------------------------------------ adaptation
   ! Smoothing a cube succeeds and moves nothing (every vertex is a corner).
@@ -417,6 +425,14 @@ program test_surfadapt
   rc = sfa_get_face_field(s, field_id, size(densities), densities)
   call check('sfa_get_face_field', rc == SFA_OK .and. minval(densities) >= 0.5_c_double &
        .and. maxval(densities) <= 0.5_c_double, sfa_error_message(s))
+  ! The host replaces the densities (after a step of its own), and reads the new ones back.
+  densities = 2.5_c_double
+  rc = sfa_set_face_field(s, field_id, size(tri_out, 2), densities)
+  call check('sfa_set_face_field', rc == SFA_OK, sfa_error_message(s))
+  densities = 0
+  rc = sfa_get_face_field(s, field_id, size(densities), densities)
+  call check('sfa_set_face_field replaced the densities', rc == SFA_OK .and. &
+       minval(densities) >= 2.5_c_double .and. maxval(densities) <= 2.5_c_double, sfa_error_message(s))
 
   call sfa_destroy(s)
   s = c_null_ptr

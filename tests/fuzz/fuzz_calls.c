@@ -136,6 +136,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             FUZZ_CALL(s, sfa_get_field(s, fuzz_byte(&in) % 4, 3 * nv, out));
             FUZZ_CALL(s, sfa_get_face_field(s, fuzz_byte(&in) % 4, nt, out));
             free(out);
+            /* A host replacing what it advanced, for the count it believes. */
+            FUZZ_CALL(s, sfa_set_field(s, fuzz_byte(&in) % 4, n, values));
+            FUZZ_CALL(s, sfa_set_face_field(s, fuzz_byte(&in) % 4, nf, values));
             break;
         }
         default: {

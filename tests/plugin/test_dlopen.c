@@ -143,6 +143,8 @@ int main(int argc, char **argv)
     MEMBER_SET(add_face_field_checked)
     MEMBER_SET(get_face_field)
     MEMBER_SET(get_vertex_origins)
+    MEMBER_SET(set_field)
+    MEMBER_SET(set_face_field)
 #undef MEMBER_SET
     if (!check(all_set, "every member of the table is set")) {
         /* Calling through a NULL member would crash instead of reporting. */

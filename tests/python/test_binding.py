@@ -287,6 +287,10 @@ class Fields(unittest.TestCase):
             both = s.get_field(pair)
             self.assertEqual(both.shape, (len(new), 2))
             np.testing.assert_allclose(both[:, 1], 7.0, rtol=1e-14)
+            s.set_field(pair, np.column_stack([both[:, 0], np.full(len(new), -3.0)]))
+            np.testing.assert_array_equal(s.get_field(pair)[:, 1], -3.0)
+            with self.assertRaises(ValueError):
+                s.set_field(pair, np.zeros(len(new)))  # one column, the field has two
             with self.assertRaisesRegex(surfadapt.ArgumentError, "no vertex field 5"):
                 s.get_field(5)
             with self.assertRaises(surfadapt.ArgumentError):
@@ -313,6 +317,17 @@ class Fields(unittest.TestCase):
             self.assertEqual(after_density.shape, (len(new_tris),))
             after = np.sum(after_density * triangle_areas(new_xyz, new_tris))
             self.assertLess(abs(after - before) / before, 1e-12)
+            # The host replaces the densities; the next adapt keeps the new integral.
+            s.set_face_field(fid, 2 * after_density)
+            s.set_param("edge_length", 0.08)
+            s.adapt()
+            last_xyz, last_tris = s.mesh()
+            last = np.sum(s.get_face_field(fid) * triangle_areas(last_xyz, last_tris))
+            self.assertLess(abs(last - 2 * after) / after, 1e-12)
+            with self.assertRaises(ValueError):
+                s.set_face_field(fid, np.ones((len(last_tris), 2)))
+            with self.assertRaises(surfadapt.ArgumentError):
+                s.set_face_field(fid, np.ones(len(new_tris)))  # made for the mesh before adapt
 
     def test_size_field(self):
         xyz, tris = sphere(3)
