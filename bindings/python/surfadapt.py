@@ -725,22 +725,24 @@ class Surface:
         known[fid.value] = (ncomp, v.ndim == 1)
         return fid.value
 
-    def _get(self, field_id, known, rows, function, name, what):
-        h = self._handle()
+    @staticmethod
+    def _shape_of(field_id, known, name, what):
+        """(ncomp, flat) of a field this handle added; ArgumentError for another id."""
         if field_id not in known:
             raise ArgumentError(Status.ERR_ARGUMENT, f"{name}: no {what} {field_id!r} on this mesh "
                                 f"(ids: {sorted(known)})", name)
-        ncomp, flat = known[field_id]
+        return known[field_id]
+
+    def _get(self, field_id, known, rows, function, name, what):
+        h = self._handle()
+        ncomp, flat = self._shape_of(field_id, known, name, what)
         out = np.empty((rows, ncomp), np.float64)
         self._check(function(h, int(field_id), out.size, _dp(out)), name)
         return out[:, 0].copy() if flat else out
 
     def _set(self, field_id, values, known, function, name, what):
         h = self._handle()
-        if field_id not in known:
-            raise ArgumentError(Status.ERR_ARGUMENT, f"{name}: no {what} {field_id!r} on this mesh "
-                                f"(ids: {sorted(known)})", name)
-        ncomp, flat = known[field_id]
+        ncomp, flat = self._shape_of(field_id, known, name, what)
         v = _doubles(values, "values")
         if (v.ndim == 1) != flat or (not flat and v.shape[1] != ncomp):
             raise ValueError(f"values must have the shape the {what} was added in, "

@@ -24,6 +24,19 @@ static double integral(const sfa_mesh_data *m, const double *density, int ncomp,
     return sum;
 }
 
+/* Two spheres in one surface: a jittered one of radius 1 (jitter seed `seed`) and a small
+ * one of radius 0.4 three units away. */
+static sfa_mesh_data two_spheres(uint64_t seed)
+{
+    sfa_mesh_data m = shape_jittered_icosphere(3, 1.0, 0.2, seed);
+    sfa_mesh_data small = shape_icosphere(2, 0.4);
+    const double shift[3] = {3, 0, 0};
+    mesh_translate(&small, shift);
+    mesh_append(&m, &small);
+    mesh_free(&small);
+    return m;
+}
+
 static double *read_face_field(const sfa_surface *s, int32_t id, int ncomp)
 {
     int32_t nv = 0, nt = 0;
@@ -43,12 +56,7 @@ static double *read_face_field(const sfa_surface *s, int32_t id, int ncomp)
 static void face_field_integrals_are_kept_per_component(void **state)
 {
     (void)state;
-    sfa_mesh_data m = shape_jittered_icosphere(3, 1.0, 0.2, 3);
-    sfa_mesh_data small = shape_icosphere(2, 0.4);
-    const double shift[3] = {3, 0, 0};
-    mesh_translate(&small, shift);
-    mesh_append(&m, &small);
-    mesh_free(&small);
+    sfa_mesh_data m = two_spheres(3);
     sfa_surface *s = make_surface(&m, 0);
     double *density = malloc(sizeof(double) * 2 * (size_t)m.ntris);
     for (int32_t t = 0; t < m.ntris; ++t) {
@@ -138,12 +146,7 @@ static void bad_face_fields_are_refused(void **state)
 static void replaced_face_field_is_what_is_kept(void **state)
 {
     (void)state;
-    sfa_mesh_data m = shape_jittered_icosphere(3, 1.0, 0.2, 5);
-    sfa_mesh_data small = shape_icosphere(2, 0.4);
-    const double shift[3] = {3, 0, 0};
-    mesh_translate(&small, shift);
-    mesh_append(&m, &small);
-    mesh_free(&small);
+    sfa_mesh_data m = two_spheres(5);
     sfa_surface *s = make_surface(&m, 1);
     double *density = malloc(sizeof(double) * (size_t)m.ntris);
     for (int32_t t = 0; t < m.ntris; ++t)
