@@ -9,7 +9,9 @@
 # runs also without the crossing guard, to show what the guard costs; Enright and vortex
 # T = 2 also with collision-safe motion and with topology change (which makes motion
 # collision-safe too), to show what those cost against the run above them; and those costs
-# again as ratios measured in alternating rounds (cost_ratio, last). The shape error of
+# again as ratios measured in alternating rounds (cost_ratio, last). Each flow runs also
+# isotropically (once for Enright and T = 6), for the shape errors of the two modes at
+# about equal vertex counts. The shape error of
 # each experiment comes from its checkpoints (bench/fidelity.cpp says how it is measured).
 set -eu
 cd "$(dirname "$0")/.."
@@ -52,6 +54,7 @@ flow() {
 
 flow enright "$runs" enright
 flow enright_no_crossing_guard "$runs" enright --no-crossing-guard
+flow enright_isotropic 1 enright --isotropic
 flow enright_collision_safe "$runs" enright --collision-safe
 flow enright_topology_change "$runs" enright --topology-change
 flow vortex_t2 "$runs" vortex --period 2
