@@ -544,10 +544,10 @@ int sfa_set_velocities(sfa_surface *s, const double *vel);
  * sfa_set_velocities() for an array made for `nverts` vertices: ::SFA_ERR_ARGUMENT, with
  * a message that says both counts, when the mesh has another number of vertices (a stale
  * array from before an sfa_adapt() call). Nothing else differs.
- * @return as sfa_set_velocities(), and ::SFA_ERR_ARGUMENT for another vertex count.
  * @param s      the surface.
  * @param nverts the number of vertices `vel` holds velocities for.
  * @param vel    `3*nverts` velocity components (read only, not kept).
+ * @return as sfa_set_velocities(), and ::SFA_ERR_ARGUMENT for another vertex count.
  */
 int sfa_set_velocities_checked(sfa_surface *s, int32_t nverts, const double *vel);
 
