@@ -301,12 +301,17 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
     // the time of sorting them by key on bench_collision's sphere. Each block is cut into
     // eight octants, its parts, each a run of triangles in increasing order, so that a
     // neighbouring block gives its guests from the parts that can reach it alone.
-    const CellFrame halves_frame{triangles[first_finite].start[0], swept_pairs_block_size * edge / 2};
+    // A corner's half block comes from a product with the inverse size rather than
+    // CellFrame::cell_of's division: any rule that gives each triangle one block will do.
+    const Vec3 blocks_origin = triangles[first_finite].start[0];
+    const double halves_per_length = 2 / (swept_pairs_block_size * edge);
     std::vector<uint64_t> key(static_cast<size_t>(n));
     std::vector<uint8_t> octant(static_cast<size_t>(n));
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
     for (int32_t t = 0; t < n; ++t) {
-        GridCell half = halves_frame.cell_of(triangles[t].start[0]), block;
+        const Vec3 at = (triangles[t].start[0] - blocks_origin) * halves_per_length;
+        GridCell half = {CellFrame::cell_number(at[0]), CellFrame::cell_number(at[1]), CellFrame::cell_number(at[2])},
+                 block;
         octant[t] = static_cast<uint8_t>((half[0] & 1) | (half[1] & 1) << 1 | (half[2] & 1) << 2);
         for (int a = 0; a < 3; ++a)
             block[a] = half[a] >= 0 ? half[a] / 2 : -((1 - half[a]) / 2); // rounded down
@@ -397,7 +402,9 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
     struct Entry {
         Box box;
         int32_t triangle;
-        bool own; // block b's, not a guest
+        bool own;         // block b's, not a guest
+        Triangle corners; // the triangle's, read with its boxes
+        int first_strip, last_strip;
     };
     // A box in the sweep, in floats relative to the lowest corner of the block's boxes
     // (nearest_float: boxes that overlap still do, and a few more may), which halves the
@@ -423,9 +430,23 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
         std::vector<int32_t> triangle; // of each row
     };
     const auto compare_block = [&](int32_t b, std::vector<Entry> &entries, Sweep &sweep, int thread) {
+        // The entries, with what the choice of axes needs summed as they come; a box with a
+        // NaN corner overlaps nothing and is left out.
         entries.clear();
+        Vec3 sum = Vec3::Zero(), square = Vec3::Zero(), extent = Vec3::Zero();
+        Box bounds = {Vec3::Constant(std::numeric_limits<double>::infinity()),
+                      Vec3::Constant(-std::numeric_limits<double>::infinity())};
+        const auto enter = [&](const Box &box, int32_t t, bool own) {
+            if (!(box[0].allFinite() && box[1].allFinite()))
+                return;
+            sum += box[0];
+            square += box[0].cwiseAbs2();
+            extent += box[1] - box[0];
+            bounds = {bounds[0].cwiseMin(box[0]), bounds[1].cwiseMax(box[1])};
+            entries.push_back({box, t, own, triangles[t].corners, 0, 0});
+        };
         for (int32_t i = block_start(b); i < block_start(b + 1); ++i)
-            entries.push_back({swept_in_frame(triangles[order[i]], frame[b]), order[i], true});
+            enter(swept_in_frame(triangles[order[i]], frame[b]), order[i], true);
         for (size_t p = after_start[b]; p < after_start[b + 1]; ++p) {
             const int32_t other = near[p].second;
             for (size_t q = 8 * static_cast<size_t>(other); q < 8 * static_cast<size_t>(other) + 8; ++q) {
@@ -436,22 +457,10 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
                     continue;
                 for (int32_t i = part_start[q]; i < part_start[q + 1]; ++i)
                     if (const Box box = swept_in_frame(triangles[order[i]], frame[b]); boxes_overlap(box, reach[b]))
-                        entries.push_back({box, order[i], false});
+                        enter(box, order[i], false);
             }
         }
-        Vec3 sum = Vec3::Zero(), square = Vec3::Zero(), extent = Vec3::Zero();
-        Box bounds = {Vec3::Constant(std::numeric_limits<double>::infinity()),
-                      Vec3::Constant(-std::numeric_limits<double>::infinity())};
-        sweep.by_low.clear();
-        for (size_t e = 0; e < entries.size(); ++e)
-            if (const Box &box = entries[e].box; box[0].allFinite() && box[1].allFinite()) { // NaN overlaps nothing
-                sum += box[0];
-                square += box[0].cwiseAbs2();
-                extent += box[1] - box[0];
-                bounds = {bounds[0].cwiseMin(box[0]), bounds[1].cwiseMax(box[1])};
-                sweep.by_low.push_back({0, static_cast<int32_t>(e)});
-            }
-        const double count = static_cast<double>(sweep.by_low.size());
+        const double count = static_cast<double>(entries.size());
         if (count < 2)
             return;
         const Vec3 spread = square / count - (sum / count).cwiseAbs2();
@@ -461,26 +470,32 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
         axis[2] = (axis[0] + 2) % 3;
         if (spread[axis[2]] > spread[axis[1]])
             std::swap(axis[1], axis[2]);
-        // Strips two boxes wide, at most max_strips (so that a box is entered that many times at most).
+        // Strips two boxes wide, at most max_strips (so that a box is entered that many times
+        // at most). A box's strips are found once, by a product with their number per unit
+        // of length (the divisions were 7 % of this search on vortex T = 2); where the range
+        // or that number overflows, one strip.
         constexpr int max_strips = 16;
         const double low = bounds[0][axis[1]], range = bounds[1][axis[1]] - low;
         const double wanted = 2 * extent[axis[1]] / count;
-        const int strips =
-            wanted > 0 ? static_cast<int>(std::clamp(std::ceil(range / wanted), 1.0, double{max_strips})) : 1;
-        const double width = range / strips;
+        int strips = wanted > 0 ? static_cast<int>(std::clamp(std::ceil(range / wanted), 1.0, double{max_strips})) : 1;
+        const double per_length = strips / range;
+        if (!(std::isfinite(range) && std::isfinite(per_length)))
+            strips = 1;
         const auto strip_of = [&](double x) { // monotonic in x
-            return strips == 1 ? 0 : std::min(strips - 1, static_cast<int>((x - low) / width));
+            return strips == 1 ? 0 : std::min(strips - 1, static_cast<int>((x - low) * per_length));
         };
-        // Sorted once along the sweep axis, then dealt into the strips in that order.
-        for (auto &o : sweep.by_low)
-            o.first = entries[static_cast<size_t>(o.second)].box[0][axis[0]];
-        detail::sort_spread_keys(sweep.by_low, sweep.sorting, sweep.bucket_start);
         sweep.strip_start.assign(static_cast<size_t>(strips) + 1, 0);
-        for (const auto &o : sweep.by_low) {
-            const Box &box = entries[static_cast<size_t>(o.second)].box;
-            for (int s = strip_of(box[0][axis[1]]), last = strip_of(box[1][axis[1]]); s <= last; ++s)
+        sweep.by_low.resize(entries.size());
+        for (size_t e = 0; e < entries.size(); ++e) {
+            Entry &entry = entries[e];
+            entry.first_strip = strip_of(entry.box[0][axis[1]]);
+            entry.last_strip = strip_of(entry.box[1][axis[1]]);
+            for (int s = entry.first_strip; s <= entry.last_strip; ++s)
                 ++sweep.strip_start[static_cast<size_t>(s) + 1];
+            sweep.by_low[e] = {entry.box[0][axis[0]], static_cast<int32_t>(e)};
         }
+        // Sorted once along the sweep axis, then dealt into the strips in that order.
+        detail::sort_spread_keys(sweep.by_low, sweep.sorting, sweep.bucket_start);
         for (int s = 0; s < strips; ++s)
             sweep.strip_start[s + 1] += sweep.strip_start[s];
         sweep.strip_fill.assign(sweep.strip_start.begin(), sweep.strip_start.end() - 1);
@@ -492,13 +507,11 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
             const Vec3 from = e.box[0] - origin, to = e.box[1] - origin;
             Row row{{nearest_float(from[axis[1]]), nearest_float(from[axis[2]]), -nearest_float(to[axis[1]]),
                      -nearest_float(to[axis[2]])},
-                    nearest_float(from[axis[0]]), nearest_float(to[axis[0]]), 0, {}};
-            const Triangle &corners = triangles[e.triangle].corners;
-            row.corners = Lanes{corners[0], corners[1], corners[2], corners[2]};
-            const int first_strip = strip_of(e.box[0][axis[1]]);
-            for (int s = first_strip, last = strip_of(e.box[1][axis[1]]); s <= last; ++s) {
+                    nearest_float(from[axis[0]]), nearest_float(to[axis[0]]), 0,
+                    Lanes{e.corners[0], e.corners[1], e.corners[2], e.corners[2]}};
+            for (int s = e.first_strip; s <= e.last_strip; ++s) {
                 const int32_t at = sweep.strip_fill[s]++;
-                row.flags = (e.own ? own_row : 0) | (s == first_strip ? first_row : 0);
+                row.flags = (e.own ? own_row : 0) | (s == e.first_strip ? first_row : 0);
                 sweep.rows[at] = row;
                 sweep.triangle[at] = e.triangle;
             }
