@@ -30,6 +30,16 @@ inline bool boxes_overlap(const Box &a, const Box &b)
 
 namespace detail {
 
+// The union of two boxes; one with a NaN corner (which overlaps nothing) adds nothing.
+inline Box box_union(const Box &a, const Box &b)
+{
+    if (!(b[0].allFinite() && b[1].allFinite()))
+        return a;
+    if (!(a[0].allFinite() && a[1].allFinite()))
+        return b;
+    return {a[0].cwiseMin(b[0]), a[1].cwiseMax(b[1])};
+}
+
 // The boxes that go into a grid of cells `cell` wide (small), in increasing order, and
 // those that would cover too many of its cells (large), compared with every box instead.
 struct BoxesBySize {
@@ -111,11 +121,9 @@ std::vector<int32_t> boxes_near_a_pairing_group(const std::vector<Box> &boxes, c
     // Each step is a parallel loop (on Enright at t = 1.5, the serial loops left a thread
     // idle for 11 ms of the 27 ms of each call's merge search).
     const int32_t count = static_cast<int32_t>(small.size());
-    const Box none = {Vec3::Constant(std::numeric_limits<double>::infinity()),
-                      Vec3::Constant(-std::numeric_limits<double>::infinity())};
+    const Vec3 none = Vec3::Constant(std::numeric_limits<double>::quiet_NaN()); // a union adds nothing to it
     const Box bounds = ordered_group_reduce(
-        count, 1, none, [](int32_t) { return 0; }, [&](int32_t m) { return boxes[small[m]]; },
-        [](const Box &a, const Box &b) { return Box{a[0].cwiseMin(b[0]), a[1].cwiseMax(b[1])}; })[0];
+        count, 1, Box{none, none}, [](int32_t) { return 0; }, [&](int32_t m) { return boxes[small[m]]; }, box_union)[0];
     const Vec3 &lowest = bounds[0], &highest = bounds[1];
     const double most_per_axis = std::cbrt(4.0 * static_cast<double>(small.size()));
     const double size = std::max(coarse, (highest - lowest).maxCoeff() / most_per_axis);

@@ -68,16 +68,6 @@ inline Box swept_in_frame(const SweptTriangle &t, const Vec3 &w)
 
 namespace detail {
 
-// The union of two boxes; one with a NaN corner (which overlaps nothing) adds nothing.
-inline Box box_union(const Box &a, const Box &b)
-{
-    if (!(b[0].allFinite() && b[1].allFinite()))
-        return a;
-    if (!(a[0].allFinite() && a[1].allFinite()))
-        return b;
-    return {a[0].cwiseMin(b[0]), a[1].cwiseMax(b[1])};
-}
-
 // Grows `into` to hold `box`, whose corners are numbers; `into` is none (NaN) until the
 // first box.
 inline void widen(Box &into, const Box &box)
