@@ -22,9 +22,15 @@ runs=${RUNS:-3}
 fidelity=${FIDELITY:-build/bench/fidelity}
 checkpoints=${CHECKPOINTS:-build/bench/checkpoints}
 
+# words LIST: the space-separated words of LIST, one a line.
+words() { echo "$1" | tr ' ' '\n' | grep .; }
+
+# checkpoint_times DIR: the times of the checkpoints in DIR (t<time>.obj), in order.
+checkpoint_times() { ls "$1"/t*.obj | sed 's/.*\/t\(.*\)[.]obj$/\1/' | sort -g; }
+
 # median NUMBERS FORMAT: the median of the space-separated numbers, printed with FORMAT.
 median() {
-    echo "$1" | tr ' ' '\n' | grep . | sort -n | awk -v format="$2" '{ t[NR] = $1 } END {
+    words "$1" | sort -n | awk -v format="$2" '{ t[NR] = $1 } END {
         printf format, (NR % 2) ? t[(NR + 1) / 2] : (t[NR / 2] + t[NR / 2 + 1]) / 2 }'
 }
 
@@ -49,7 +55,7 @@ flow() {
     done
     printf '{"bench":"flow_median","experiment":"%s","runs":%d,"median_seconds":%s}\n' "$name" "$count" \
         "$(median "$times" %.2f)"
-    for mesh in $(ls "$checkpoints/$name"/t*.obj | sed 's/.*\/t\(.*\)[.]obj$/\1/' | sort -g); do
+    for mesh in $(checkpoint_times "$checkpoints/$name"); do
         "$fidelity" "$checkpoints/$name/t$mesh.obj" --json | grep '^{' | sed "s/^{/{\"experiment\":\"$name\",/"
     done
 }
@@ -108,7 +114,7 @@ spread() {
         rm -rf "$dir"
         angles=$("$tool" "$@" --resolution "$n" --report-every "$quarter" --checkpoints "$dir" |
             awk '$1 ~ /^[0-9]+$/ && $2 ~ /^[0-9]+[.][0-9]+$/ && $1 > 0 { printf "%s%s", sep, $7; sep = " " }')
-        times=$(ls "$dir"/t*.obj | sed 's/.*\/t\(.*\)[.]obj$/\1/' | sort -g)
+        times=$(checkpoint_times "$dir")
         floor=$("$fidelity" "$dir/t$(echo "$times" | head -1).obj" --json | grep '^{')
         end=$("$fidelity" "$dir/t$(echo "$times" | tail -1).obj" --json | grep '^{')
         max_ratio=$(ratio "$(field "$end" max)" "$(field "$floor" max)")
@@ -118,10 +124,10 @@ spread() {
         all_angles="$all_angles $angles" max_ratios="$max_ratios $max_ratio" rms_ratios="$rms_ratios $rms_ratio"
         rm -rf "$dir" # 20 to 60 MB a run; the line above keeps what they showed
     done
-    above=$(echo "$all_angles" | tr ' ' '\n' | grep . | awk '$1 > 5 { n++ } END { print n + 0 }')
-    checkpoints_seen=$(echo "$all_angles" | tr ' ' '\n' | grep -c .)
-    lowest=$(echo "$max_ratios" | tr ' ' '\n' | grep . | sort -n | head -1)
-    highest=$(echo "$max_ratios" | tr ' ' '\n' | grep . | sort -n | tail -1)
+    above=$(words "$all_angles" | awk '$1 > 5 { n++ } END { print n + 0 }')
+    checkpoints_seen=$(words "$all_angles" | wc -l)
+    lowest=$(words "$max_ratios" | sort -n | head -1)
+    highest=$(words "$max_ratios" | sort -n | tail -1)
     printf '{"bench":"spread_summary","experiment":"%s","resolutions":5,"median_max_over_floor":%s,"max_over_floor_range":[%s,%s],"median_rms_over_floor":%s,"median_min_angle":%s,"checkpoints_above_5_degrees":%d,"checkpoints":%d}\n' \
         "$name" "$(median "$max_ratios" %.2f)" "$lowest" "$highest" "$(median "$rms_ratios" %.2f)" \
         "$(median "$all_angles" %.2f)" "$above" "$checkpoints_seen"

@@ -424,15 +424,14 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
         // NaN corner overlaps nothing and is left out.
         entries.clear();
         Vec3 sum = Vec3::Zero(), square = Vec3::Zero(), extent = Vec3::Zero();
-        Box bounds = {Vec3::Constant(std::numeric_limits<double>::infinity()),
-                      Vec3::Constant(-std::numeric_limits<double>::infinity())};
+        Box bounds = {none, none};
         const auto enter = [&](const Box &box, int32_t t, bool own) {
             if (!(box[0].allFinite() && box[1].allFinite()))
                 return;
             sum += box[0];
             square += box[0].cwiseAbs2();
             extent += box[1] - box[0];
-            bounds = {bounds[0].cwiseMin(box[0]), bounds[1].cwiseMax(box[1])};
+            detail::widen(bounds, box);
             entries.push_back({box, t, own, triangles[t].corners, 0, 0});
         };
         for (int32_t i = block_start(b); i < block_start(b + 1); ++i)
