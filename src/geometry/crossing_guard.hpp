@@ -78,9 +78,11 @@ public:
     // `pos` (the positions they were listed at): 1 for each face m with asking[m] that
     // meets another of them sharing no vertex with it, 0 for the others. The same as asking
     // crosses() of each such face, but each pair of overlapping boxes is compared once
-    // (swept_pairs.hpp, at rest): cheaper where most faces ask.
-    std::vector<char> faces_meeting(const TriMesh &mesh, const std::vector<Vec3> &pos,
-                                    const std::vector<char> &asking) const;
+    // (swept_pairs.hpp, at rest): cheaper where most faces ask. The pairs are kept for the
+    // next call, which compares them alone if the same faces are listed, with the same
+    // corners, each within a small margin of where it was (a sweep and then the volume
+    // offsets, which move vertices by some 1e-4 of an edge).
+    std::vector<char> faces_meeting(const TriMesh &mesh, const std::vector<Vec3> &pos, const std::vector<char> &asking);
 
 private:
     // A face in a cell, with its box and first cell as they were when it was entered: most
@@ -98,6 +100,16 @@ private:
     std::vector<int32_t> faces_;
     std::vector<std::array<Vec3, 2>> boxes_; // of faces_, while they are listed
     CellFrame cells_;                        // for them: cells of two mean edges
+
+    // faces_meeting's pairs, by place in the list: every two listed faces that share no
+    // corner and whose boxes, grown by a margin, overlapped; and each face's number,
+    // corners and grown box when they were found.
+    bool pairs_still_hold(const TriMesh &mesh) const;
+    void find_pairs(const TriMesh &mesh, const std::vector<Vec3> &pos);
+    std::vector<std::pair<int32_t, int32_t>> pairs_;
+    std::vector<int32_t> paired_faces_;
+    std::vector<Triangle> paired_corners_;
+    std::vector<std::array<Vec3, 2>> paired_boxes_;
     // The faces indexed together, sorted bucket by bucket: a query reads one contiguous run
     // per cell; the faces refreshed since, chained per bucket.
     SpatialGrid<FaceEntry> grid_;
