@@ -180,6 +180,41 @@ void faces_meeting_names_the_faces_crosses_finds(void **)
     assert_true(meeting > 10 && meeting < static_cast<int32_t>(listed.size()) / 2 - 10); // some of those asking do not
 }
 
+// faces_meeting keeps the pairs it compared for its next call (a sweep's check, then the
+// volume offsets' a hair further): after a move within its margin it compares only those,
+// after a larger one it looks again, and either way it names what a new guard names. The
+// slab is pressed to a hundred-thousandth of its width, its top nearer to its bottom than any margin
+// but apart; then one vertex of the top is pushed through the bottom by a little, and the
+// same vertex by more.
+void faces_meeting_after_a_small_move_names_what_a_new_guard_names(void **)
+{
+    TriMesh slab = box_mesh(0.02);
+    for (Vec3 &p : slab.pos)
+        p.z() *= 5e-4;
+    const auto all_of = [](size_t n) { return std::vector<char>(n, 1); };
+    CrossingGuard guard(near_facing_sheet(slab));
+    const size_t listed = guard.list_faces(slab, slab.pos).size();
+    assert_int_equal(count(guard.faces_meeting(slab, slab.pos, all_of(listed))), 0);
+
+    int32_t middle = 0;
+    for (int32_t v = 0; v < slab.num_vertices(); ++v)
+        if (slab.pos[v].z() > 0 &&
+            (slab.pos[v] - Vec3(0.5, 0.5, 0)).norm() < (slab.pos[middle] - Vec3(0.5, 0.5, 0)).norm())
+            middle = v;
+    for (const double push : {5e-5, 1e-2}) {
+        std::vector<Vec3> moved = slab.pos;
+        moved[middle].z() -= push;
+        assert_int_equal(guard.list_faces(slab, moved).size(), listed);
+        const std::vector<char> met = guard.faces_meeting(slab, moved, all_of(listed));
+        CrossingGuard fresh(near_facing_sheet(slab));
+        fresh.list_faces(slab, moved);
+        assert_true(met == fresh.faces_meeting(slab, moved, all_of(listed)));
+        // The pushed vertex's fan meets the bottom, and so the bottom's faces it crosses.
+        print_message("pushed by %g: %d faces meet another\n", push, count(met));
+        assert_true(count(met) >= 6);
+    }
+}
+
 void watched_vertices_follow_the_numbering(void **)
 {
     CrossingGuard guard(std::vector<char>{0, 1, 0, 1});
@@ -278,6 +313,7 @@ int main(void)
         cmocka_unit_test(every_two_vertices_whose_fans_may_meet_are_watched),
         cmocka_unit_test(a_face_moved_through_the_other_side_of_a_sheet_crosses_it),
         cmocka_unit_test(faces_meeting_names_the_faces_crosses_finds),
+        cmocka_unit_test(faces_meeting_after_a_small_move_names_what_a_new_guard_names),
         cmocka_unit_test(watched_vertices_follow_the_numbering),
         cmocka_unit_test(features_are_watched_but_not_near_a_sheet),
         cmocka_unit_test(remeshing_never_carries_a_thin_filament_through_itself),
