@@ -226,9 +226,11 @@ void CrossingGuard::find_pairs(const TriMesh &mesh, const std::vector<Vec3> &pos
     // (its boxes are a little wider, never narrower: the exact test decides). A grid's
     // pairs of overlapping boxes took twice the instructions. Two faces whose boxes
     // overlap now lie each in its grown box of then, so those overlap too: the pair is
-    // listed. The margin, a thousandth of the cells' size, is some twenty times the volume
-    // offsets of the paper's flows.
-    const double margin = 1e-3 * cells_.size;
+    // listed. Each box grows by a thousandth of its own size, some ten times the volume
+    // offsets of the paper's flows, so that a graded mesh's small faces pair no more than
+    // their size says; a box that would grow past the largest double stays as it is (one
+    // with a corner not a number overlaps nothing, and a face must not vanish from the
+    // broad phase by being grown).
     const size_t n = faces_.size();
     std::vector<SweptTriangle> at_rest(n);
     paired_corners_.resize(n);
@@ -237,9 +239,12 @@ void CrossingGuard::find_pairs(const TriMesh &mesh, const std::vector<Vec3> &pos
     for (size_t m = 0; m < n; ++m) {
         paired_corners_[m] = mesh.tri[faces_[m]];
         at_rest[m] = resting_triangle(paired_corners_[m], pos);
-        at_rest[m].start[0].array() -= margin;
-        at_rest[m].start[1].array() += margin;
-        paired_boxes_[m] = at_rest[m].start;
+        Box &box = at_rest[m].start;
+        const double margin = 1e-3 * (box[1] - box[0]).maxCoeff();
+        const Box grown = {box[0].array() - margin, box[1].array() + margin};
+        if (grown[0].allFinite() && grown[1].allFinite())
+            box = grown;
+        paired_boxes_[m] = box;
     }
     paired_faces_ = faces_;
     std::vector<std::vector<std::pair<int32_t, int32_t>>> found(static_cast<size_t>(loop_threads()));

@@ -80,8 +80,8 @@ public:
     // crosses() of each such face, but each pair of overlapping boxes is compared once
     // (swept_pairs.hpp, at rest): cheaper where most faces ask. The pairs are kept for the
     // next call, which compares them alone if the same faces are listed, with the same
-    // corners, each within a small margin of where it was (a sweep and then the volume
-    // offsets, which move vertices by some 1e-4 of an edge).
+    // corners, each within a thousandth of its size of where it was (a sweep and then the
+    // volume offsets, which move vertices by some 1e-4 of an edge).
     std::vector<char> faces_meeting(const TriMesh &mesh, const std::vector<Vec3> &pos, const std::vector<char> &asking);
 
 private:
