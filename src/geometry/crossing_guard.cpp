@@ -212,7 +212,7 @@ bool CrossingGuard::pairs_still_hold(const TriMesh &mesh) const
     char holds = 1;
 #pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(&& : holds)
     for (int32_t m = 0; m < n; ++m) {
-        const std::array<Vec3, 2> &box = boxes_[m], &was = paired_boxes_[m];
+        const Box &box = boxes_[m], &was = paired_boxes_[m];
         holds = holds && mesh.tri[faces_[m]] == paired_corners_[m] && (was[0].array() <= box[0].array()).all() &&
                 (box[1].array() <= was[1].array()).all();
     }
@@ -228,9 +228,9 @@ void CrossingGuard::find_pairs(const TriMesh &mesh, const std::vector<Vec3> &pos
     // overlap now lie each in its grown box of then, so those overlap too: the pair is
     // listed. Each box grows by a thousandth of its own size, some ten times the volume
     // offsets of the paper's flows, so that a graded mesh's small faces pair no more than
-    // their size says; a box that would grow past the largest double stays as it is (one
-    // with a corner not a number overlaps nothing, and a face must not vanish from the
-    // broad phase by being grown).
+    // their size says; a box that would grow past the largest double stays as it is (the
+    // broad phase leaves out a box whose corners are not finite, and a face must not
+    // vanish from it by being grown).
     const size_t n = faces_.size();
     std::vector<SweptTriangle> at_rest(n);
     paired_corners_.resize(n);
@@ -248,11 +248,9 @@ void CrossingGuard::find_pairs(const TriMesh &mesh, const std::vector<Vec3> &pos
     }
     paired_faces_ = faces_;
     std::vector<std::vector<std::pair<int32_t, int32_t>>> found(static_cast<size_t>(loop_threads()));
-    LoopFailure failure;
     for_each_pair_that_may_meet(at_rest, [&](int32_t a, int32_t b, int thread) {
-        failure.run([&] { found[static_cast<size_t>(thread)].push_back({a, b}); });
+        found[static_cast<size_t>(thread)].push_back({a, b}); // what this throws, the search passes on
     });
-    failure.rethrow();
     pairs_.clear();
     for (const auto &list : found)
         pairs_.insert(pairs_.end(), list.begin(), list.end());
