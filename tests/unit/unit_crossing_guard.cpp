@@ -181,11 +181,11 @@ void faces_meeting_names_the_faces_crosses_finds(void **)
 }
 
 // faces_meeting keeps the pairs it compared for its next call (a sweep's check, then the
-// volume offsets' a hair further): after a move within its margin it compares only those,
-// after a larger one it looks again, and either way it names what a new guard names. The
-// slab is pressed to a hundred-thousandth of its width, its top nearer to its bottom than any margin
-// but apart; then one vertex of the top is pushed through the bottom by a little, and the
-// same vertex by more.
+// volume offsets' a hair further): after a move within its margin (a thousandth of each
+// face's size) it compares only those, after a larger one it looks again, and either way
+// it names what a new guard names. The slab is pressed to a hundred-thousandth of its
+// width, its top and bottom nearer than the margin but apart; then one vertex of the top
+// is pushed through the bottom by less than the margin, and the same vertex by more.
 void faces_meeting_after_a_small_move_names_what_a_new_guard_names(void **)
 {
     TriMesh slab = box_mesh(0.02);
