@@ -85,6 +85,10 @@ Verdict judge(const TriMesh &mesh, int32_t h, const std::vector<Mat3> &quadric, 
     const Mat3 old_terms = face_quadric(old0 / 2) + face_quadric(old1 / 2);
     const Mat3 both_diagonals = 1.5 * (old_terms + face_quadric(new0 / 2) + face_quadric(new1 / 2));
     const Mat3 summed = quadric[quad.a] + quadric[quad.b] + quadric[quad.p] + quadric[quad.q] - 3 * old_terms + both_diagonals;
+    // Most edges keep their diagonal for sure: no decomposition for them (88 % of the
+    // edges judged on the paper's flows).
+    if (surely_acute_opposite(summed, a, b, p, q, old0, old1, settings.bounds))
+        return keep;
     const VertexMetric metric = vertex_metric(decompose(summed), old0 + old1, settings.bounds);
     const Eigen::Matrix<double, 2, 3> to_metric_space =
         Eigen::Vector2d(std::sqrt(metric.m_major), std::sqrt(metric.m_minor)).asDiagonal() * metric.frame().transpose();
@@ -196,6 +200,42 @@ private:
 };
 
 } // namespace
+
+// (flip.hpp) Bounds that hold for any unit n (here the quad's normal) give the certificate
+// without the decomposition. lambda1 >= n.A n, and lambda2 <= lambda2 + lambda3 = trace(A) -
+// lambda1 <= trace(A) - n.A n (= rest); so m_major / m_minor is at most rest / (psi_l's
+// ratio times n.A n) (eq. 12: where lambda2 is below psi_l, both clamp to 1), and e1 leans
+// from n by beta with sin^2 beta <= rest / (n.A n - rest), for lambda1 - n.A n >= (lambda1 -
+// lambda2) sin^2 beta. A triangle's map into metric space, the projection onto the plane
+// normal to e1 followed by the metric's scaling, stretches one direction at most K =
+// sqrt(m_major / m_minor) / cos(gamma) times another, gamma the angle between the triangle's
+// normal and e1 (at most its angle to n plus beta), and an angle theta then becomes at most
+// 2 atan(K tan(theta / 2)). The margin keeps the certified angles a tenth of a degree from
+// square, far beyond the round-off of either test. Only a quadric whose e1 leans less than
+// 35 degrees from n (rest < n.A n / 4) is looked at.
+bool surely_acute_opposite(const Mat3 &summed, const Vec3 &a, const Vec3 &b, const Vec3 &p, const Vec3 &q,
+                           const Vec3 &old0, const Vec3 &old1, const MetricBounds &bounds)
+{
+    const Vec3 n = (old0 + old1).normalized();
+    const double along = n.dot(summed * n), rest = summed.trace() - along;
+    if (!(along > 0 && rest >= 0 && rest < 0.25 * along))
+        return false;
+    const double most_anisotropy = // of m_major / m_minor
+        bounds.anisotropic ? std::max(1.0, std::min(rest / (bounds.lower_ratio * along), bounds.upper_ratio / bounds.lower_ratio))
+                           : 1.0;
+    const double sin2_lean = rest / (along - rest), sin_lean = std::sqrt(sin2_lean), cos_lean = std::sqrt(1 - sin2_lean);
+    const auto acute = [&](const Vec3 &apex, const Vec3 &face_area) {
+        const double c = n.dot(face_area) / face_area.norm(), s = std::sqrt(std::max(0.0, 1 - c * c));
+        const double cos_gamma = c * cos_lean - s * sin_lean; // cos(angle to n + lean)
+        if (!(c > 0 && cos_gamma > 0.5))
+            return false;
+        const double stretch = std::sqrt(most_anisotropy) / cos_gamma;
+        const Vec3 u = a - apex, w = b - apex;
+        // tan(theta / 2) = |u x w| / (|u| |w| + u.w)
+        return stretch * u.cross(w).norm() < 0.998 * (u.norm() * w.norm() + u.dot(w));
+    };
+    return acute(p, old0) && acute(q, old1);
+}
 
 int32_t flipping_pass(const PassContext &context, const SurfaceAnalysis &analysis, const FlipSettings &settings)
 {

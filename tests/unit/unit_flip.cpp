@@ -7,6 +7,8 @@
 #include "adapt/smooth.hpp"
 #include "adapt/settings.hpp"
 #include "geometry/measures.hpp"
+#include "geometry/metric.hpp"
+#include "geometry/quadric.hpp"
 #include "mesh/edge_flip.hpp"
 #include "mesh/invariants.hpp"
 #include "mesh/validate.hpp"
@@ -368,6 +370,68 @@ void smoothing_and_flipping_stretch_a_cylinder_along_its_axis(void **)
             }
 }
 
+// The certificate that spares the flip test its decomposition (surely_acute_opposite) must
+// never be wrong: wherever it holds, the angles at p and q opposite the edge are acute in
+// the metric space the test itself makes (decompose, vertex_metric, the projection onto the
+// frame). Random quads, flat or folded by up to 25 degrees, with opposite angles from about
+// 30 to 130 degrees, and summed quadrics of faces whose normals spread about the quad's, evenly
+// or along one direction (anisotropic), from nothing to 40 degrees; near the certificate's
+// limits too (angles near square, strong anisotropy, quadric and quad normals apart). It
+// must certify a fair share of them, or the flows gain nothing.
+void the_acute_certificate_holds_in_the_metric_space_of_the_flip_test(void **)
+{
+    shapes_rng rng = rng_seed(20261205);
+    const auto uniform = [&](double low, double high) { return low + (high - low) * rng_uniform(&rng); };
+    const auto unit = [&] {
+        for (;;) {
+            const Vec3 x(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+            if (x.squaredNorm() > 1e-2 && x.squaredNorm() <= 1)
+                return Vec3(x.normalized());
+        }
+    };
+    int certified = 0, tried = 0;
+    for (const MetricBounds &bounds : {default_bounds, MetricBounds(pi / 90, pi / 2, true), MetricBounds(pi / 45, pi / 6, false)})
+        for (int k = 0; k < 200000; ++k) {
+            // The quad: edge (a, b) on the x axis of a frame (x, y, normal), p on the normal's
+            // left, q on its right, each lifted out of the plane by its own fold.
+            const Vec3 normal = unit(), x = normal.unitOrthogonal(), y = normal.cross(x);
+            const Vec3 a = Vec3::Zero(), b = x;
+            const auto apex = [&](double side) {
+                const double along = uniform(0.1, 0.9), h = uniform(0.25, 2), fold = uniform(-25, 25) * pi / 180;
+                return Vec3(along * x + side * h * (std::cos(fold) * y + std::sin(fold) * normal));
+            };
+            const Vec3 p = apex(1), q = apex(-1);
+            const Vec3 old0 = (b - a).cross(p - a), old1 = (a - b).cross(q - b);
+            // The summed quadric: faces whose normals spread about one leaning from the quad's.
+            const Vec3 lean_axis = unit();
+            const Vec3 centre = (normal + uniform(0, 0.3) * lean_axis).normalized();
+            const Vec3 spread_axis = centre.unitOrthogonal();
+            const double spread = uniform(0, 0.7), across = uniform(0, 1) < 0.5 ? spread : uniform(0, 0.05);
+            Mat3 summed = Mat3::Zero();
+            for (int f = 0; f < 24; ++f) {
+                const Vec3 tangent = uniform(-spread, spread) * spread_axis +
+                                     uniform(-across, across) * centre.cross(spread_axis);
+                const Vec3 face = (centre + tangent).normalized();
+                summed += uniform(0.2, 1) * face * face.transpose();
+            }
+            ++tried;
+            if (!surely_acute_opposite(summed, a, b, p, q, old0, old1, bounds))
+                continue;
+            ++certified;
+            const VertexMetric metric = vertex_metric(decompose(summed), old0 + old1, bounds);
+            const Eigen::Matrix<double, 2, 3> to_metric_space =
+                Eigen::Vector2d(std::sqrt(metric.m_major), std::sqrt(metric.m_minor)).asDiagonal() *
+                metric.frame().transpose();
+            const Eigen::Vector2d ma = to_metric_space * a, mb = to_metric_space * b, mp = to_metric_space * p,
+                                  mq = to_metric_space * q;
+            if (!((ma - mp).dot(mb - mp) > 0 && (ma - mq).dot(mb - mq) > 0))
+                fail_msg("case %d: certified acute, but not in the metric space (m %g %g)", k, metric.m_major,
+                         metric.m_minor);
+        }
+    std::printf("the certificate held for %d of %d quads\n", certified, tried);
+    assert_true(certified > tried / 10);
+}
+
 } // namespace
 
 int main()
@@ -378,6 +442,7 @@ int main()
         cmocka_unit_test(a_frame_steep_to_the_quad_does_not_flip_it_into_a_sliver),
         cmocka_unit_test(ridge_edges_of_fandisk_are_never_flipped),
         cmocka_unit_test(smoothing_and_flipping_stretch_a_cylinder_along_its_axis),
+        cmocka_unit_test(the_acute_certificate_holds_in_the_metric_space_of_the_flip_test),
     };
     return cmocka_run_group_tests_name("unit_flip", tests, nullptr, nullptr);
 }
