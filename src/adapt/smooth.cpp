@@ -42,11 +42,23 @@ Vec3 tangent_target(const TriMesh &mesh, const SurfaceAnalysis &analysis, int32_
     };
     const auto root = [&](const Eigen::Matrix2d &m) { return identity(m) ? m : tensor_sqrt(m); };
     const auto inverse_root = [&](const Eigen::Matrix2d &m) { return identity(m) ? m : tensor_inverse_sqrt(m); };
+    // Where both ends are isotropic (their tensors exactly the identity), so is the edge's
+    // metric, and the image is the midpoint's own coordinates: the same numbers without the
+    // tensor's arithmetic (every smooth vertex is tested in every sweep).
+    const bool own_isotropic = mp.m_major == 1 && mp.m_minor == 1;
     mesh.for_each_neighbour(v, [&](int32_t w, int32_t) {
-        const Eigen::Matrix2d half = 0.5 * (own + tensor_in_frame(analysis.metric[w], mp));
-        sum_metric += half;
+        const VertexMetric &mw = analysis.metric[w];
         const Vec3 to_midpoint = 0.5 * (mesh.pos[w] - mesh.pos[v]);
-        const Eigen::Vector2d image = root(half) * Eigen::Vector2d(mp.major.dot(to_midpoint), mp.minor.dot(to_midpoint));
+        const Eigen::Vector2d local(mp.major.dot(to_midpoint), mp.minor.dot(to_midpoint));
+        Eigen::Vector2d image;
+        if (own_isotropic && mw.m_major == 1 && mw.m_minor == 1) {
+            sum_metric += Eigen::Matrix2d::Identity();
+            image = local;
+        } else {
+            const Eigen::Matrix2d half = 0.5 * (own + tensor_in_frame(mw, mp));
+            sum_metric += half;
+            image = root(half) * local;
+        }
         sum_image += image;
         sum_image_length += image.norm();
         ++count;
