@@ -62,9 +62,14 @@ inline bool turns_from_surface(const Vec3 &before, const Vec3 &after, const Vec3
     const double along = before.dot(side);
     if (!(along > 0))
         return false;
+    // Nearly every face stands within 56 degrees of the side (cosine above sqrt(0.3), with
+    // room for the rounding of both tests), which it may whatever it did before: no roots.
+    const double after_along = after.dot(side);
+    if (after_along > 0 && after_along * after_along >= 0.3 * (after_length * after_length) * side.squaredNorm())
+        return false;
     const double side_length = side.norm();
     const double cos_before = along / (before_length * side_length);
-    const double cos_after = after.dot(side) / (after_length * side_length);
+    const double cos_after = after_along / (after_length * side_length);
     return !(cos_after > 0 && cos_after >= std::min(cos_before, cos_steepest_face));
 }
 
