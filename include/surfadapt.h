@@ -261,9 +261,10 @@ enum sfa_param {
         least two desired edge lengths apart). Then it cuts every neck or filament that contraction has
         thinned to a loop of three edges shorter than the merge distance, closing both
         sides with a triangle (one drop becomes two). Both are checked with exact
-        predicates and undone where they would make the surface cross itself; vertices the
-        host fixed and the ends of required edges take no part. A closed component less
-        than two merge distances across is removed (::SFA_MEASURE_DROPS_REMOVED). The
+        predicates and undone where they would make the surface cross itself (or leave a
+        triangle flat to round-off); vertices the host fixed and the ends of required edges
+        take no part. A closed component less than two merge distances across is removed
+        (::SFA_MEASURE_DROPS_REMOVED), unless nothing else is left. The
         adaptation that follows
         shapes the new triangles. Motion (sfa_move(), sfa_advect()) is then collision-safe
         as with ::SFA_PARAM_COLLISION_SAFE_MOTION, so that sheets meet here instead of

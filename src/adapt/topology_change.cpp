@@ -54,6 +54,17 @@ double volume_about(const std::vector<Vec3> &pos, const Triangle &t, const Vec3 
 
 bool is_live(const Triangle &t) { return t[0] >= 0; }
 
+// True if triangle t's height is below a trillionth of its longest edge: flat to round-off
+// for the operations after the events, which read its normal (sfa_set_mesh refuses 4 eps,
+// about 9e-16). The corners of two sheets that touch can line up so (a soak finding, seed
+// 20261205010480: a tube triangle 3.6e-16 flat, which no later pass could shape).
+bool flat(const std::vector<Vec3> &pos, const Triangle &t)
+{
+    const Vec3 &a = pos[t[0]], &b = pos[t[1]], &c = pos[t[2]];
+    const double longest2 = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+    return !((b - a).cross(c - a).norm() > 1e-12 * longest2);
+}
+
 struct MergeCandidate {
     double distance;
     int32_t h1, h2;
@@ -93,8 +104,9 @@ public:
     void merge_facing_sheets();
     void pinch_thin_necks();
     void remove_tiny_drops(const Components &components);
-    // Undoes every event that made or moved a triangle meeting one it shares no corner with.
-    void undo_crossing_events();
+    // Undoes every event that made or moved a triangle meeting one it shares no corner
+    // with, or a flat one.
+    void undo_unsound_events();
     // The mesh, the host's data and the hints as the live events left them; the counts.
     TopologyCounts finish(TriMesh &mesh, std::vector<int32_t> &hints);
 
@@ -367,6 +379,8 @@ void Surgery::remove_tiny_drops(const Components &components)
     // (a bubble of the whole surface costs a few hundred of them, not all).
     const double longest = data_.size.empty() ? l_ : *std::max_element(data_.size.begin(), data_.size.end());
     const double surely_wide = 2 * tiny_drop * ratio_ * longest;
+    std::vector<std::pair<int32_t, Vec3>> tiny; // the components to remove, and their centres
+    int32_t tiny_triangles = 0;
     for (int32_t c = 0; c < components.count; ++c) {
         if (!components.closed[c])
             continue;
@@ -388,9 +402,17 @@ void Surgery::remove_tiny_drops(const Components &components)
         }
         if (wide || pinned || !((highest - lowest).norm() < tiny_drop * distance / corners))
             continue;
+        tiny.push_back({c, 0.5 * (lowest + highest)});
+        tiny_triangles += last - first;
+    }
+    // A surface that is all tiny drops stays: a call leaves a surface, never nothing (a
+    // soak finding, seed 20261205015752: a box two edges across, its merge distance 1.17 l).
+    if (tiny_triangles == static_cast<int32_t>(tri_.size()))
+        return;
+    for (const auto &[c, centre] : tiny) {
         Event event{Event::Kind::removal};
-        event.centre = 0.5 * (lowest + highest);
-        for (int32_t k = first; k < last; ++k) {
+        event.centre = centre;
+        for (int32_t k = components.triangle_start[c]; k < components.triangle_start[c + 1]; ++k) {
             for (int32_t v : tri_[components.triangles[k]])
                 used_[v] = 1; // no pinch of what is gone
             replace_triangle(components.triangles[k], {-1, -1, -1}, event);
@@ -400,7 +422,7 @@ void Surgery::remove_tiny_drops(const Components &components)
     }
 }
 
-void Surgery::undo_crossing_events()
+void Surgery::undo_unsound_events()
 {
     // Each round undoes at least one event, or ends. A removal makes no triangle.
     const auto makes_triangles = [](const Event &e) { return e.live && e.kind != Event::Kind::removal; };
@@ -440,7 +462,10 @@ void Surgery::undo_crossing_events()
         for (size_t f = 0; f < tri_.size(); ++f)
             if (event_of[f] >= 0)
                 of_events.push_back(static_cast<int32_t>(f));
-        std::vector<char> crossing(events_.size(), 0);
+        std::vector<char> unsound(events_.size(), 0);
+        for (const int32_t f : of_events)
+            if (flat(pos_, tri_[f]))
+                unsound[event_of[f]] = 1;
         for_each_overlapping_pair_with(boxes, of_events, 2 * cell / live, [&](int32_t s, int32_t t) {
             const Triangle &p = tri_[s], &q = tri_[t];
             if (share_a_vertex(p, q) ||
@@ -448,11 +473,11 @@ void Surgery::undo_crossing_events()
                 return;
             for (int32_t e : {event_of[s], event_of[t]})
                 if (e >= 0)
-                    crossing[e] = 1; // a byte each: the race writes the same value
+                    unsound[e] = 1; // a byte each: the race writes the same value
         });
         bool undone = false;
         for (size_t e = 0; e < events_.size(); ++e) {
-            if (!crossing[e])
+            if (!unsound[e])
                 continue;
             Event &event = events_[e];
             for (int32_t f : event.added)
@@ -601,7 +626,7 @@ TopologyCounts change_topology(TriMesh &mesh, SurfaceData &data, Components &com
             if (stage == 1)
                 surgery.pinch_thin_necks();
         }
-        surgery.undo_crossing_events();
+        surgery.undo_unsound_events();
         const TopologyCounts made = surgery.finish(mesh, origin_hints);
         if (made.merges + made.pinches + made.removals > 0)
             components = connected_components(mesh);

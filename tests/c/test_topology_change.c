@@ -282,6 +282,41 @@ static void a_finely_meshed_tiny_drop_is_removed(void **state)
     sfa_destroy(s);
 }
 
+/* A surface that is nothing but drops below what the mesh resolves stays as it is: a call
+ * leaves a surface, never none (a soak finding, seed 20261205015752: a box two edges
+ * across went, and sfa_adapt returned SFA_OK with no triangle, which no handle accepts). */
+static void a_surface_of_tiny_drops_alone_stays(void **state)
+{
+    (void)state;
+    sfa_mesh_data m = shape_icosphere(1, 0.004), other = shape_icosphere(1, 0.003);
+    const double aside[3] = {0.02, 0, 0};
+    mesh_translate(&other, aside);
+    mesh_append(&m, &other);
+    mesh_free(&other);
+    sfa_surface *s = make_surface(&m, 0);
+    mesh_free(&m);
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, 0.05));
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_TOPOLOGY_CHANGE, 1));
+    assert_ok(s, sfa_adapt(s));
+    assert_int_equal((int)measure(s, SFA_MEASURE_DROPS_REMOVED), 0);
+    assert_int_equal(components(s), 2);
+    assert_all_closed(s);
+    /* What it left is a mesh another handle accepts. */
+    int32_t nverts = 0, ntris = 0;
+    assert_ok(s, sfa_get_counts(s, &nverts, &ntris));
+    assert_true(ntris > 0);
+    double *xyz = malloc(sizeof(double) * 3 * (size_t)nverts);
+    int32_t *tris = malloc(sizeof(int32_t) * 3 * (size_t)ntris);
+    assert_ok(s, sfa_get_mesh(s, nverts, xyz, ntris, tris, 0));
+    sfa_surface *fresh = NULL;
+    assert_int_equal(sfa_create(&fresh), SFA_OK);
+    assert_ok(fresh, sfa_set_mesh(fresh, nverts, xyz, ntris, tris, 0));
+    sfa_destroy(fresh);
+    free(xyz);
+    free(tris);
+    sfa_destroy(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -290,6 +325,7 @@ int main(void)
         cmocka_unit_test(squeezed_waist_pinches_off),
         cmocka_unit_test(drops_a_pinch_cuts_off_below_resolution_go_at_once),
         cmocka_unit_test(a_finely_meshed_tiny_drop_is_removed),
+        cmocka_unit_test(a_surface_of_tiny_drops_alone_stays),
     };
     return cmocka_run_group_tests_name("test_topology_change", tests, NULL, NULL);
 }
