@@ -317,10 +317,14 @@ build/bench/%: bench/%.c $(TEST_SUPPORT_OBJ) $(LIB_SO) $(LIB_DEV)
 build/bench/%: bench/%.cpp $(TEST_SUPPORT_OBJ) $(LIB_A)
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -Ibench -Iapps/surfadapt -o $@ $< $(TEST_SUPPORT_OBJ) $(LIB_A) -lm
-# bench_collision moves its surface by the tool's Enright field.
-build/bench/bench_collision: bench/bench_collision.cpp build/apps/surfadapt/flows.o $(TEST_SUPPORT_OBJ) $(LIB_A)
+# bench_collision moves its surface by the tool's Enright field; it and bench_topology also
+# time their searches on the flows' checkpoints (bench/checkpoint_mesh.hpp; the mesh
+# readers are in TEST_SUPPORT).
+BENCH_CHECKPOINT_OBJS := $(addprefix build/apps/surfadapt/,flows.o checkpoint.o)
+build/bench/bench_collision build/bench/bench_topology: build/bench/%: bench/%.cpp bench/checkpoint_mesh.hpp \
+                                                        $(BENCH_CHECKPOINT_OBJS) $(TEST_SUPPORT_OBJ) $(LIB_A)
 	@mkdir -p $(@D)
-	$(CXX) $(CXXFLAGS) -Ibench -Iapps/surfadapt -o $@ $< build/apps/surfadapt/flows.o $(TEST_SUPPORT_OBJ) $(LIB_A) -lm
+	$(CXX) $(CXXFLAGS) -Ibench -Iapps/surfadapt -o $@ $< $(BENCH_CHECKPOINT_OBJS) $(TEST_SUPPORT_OBJ) $(LIB_A) -lm
 # The backtrace needs the flows' velocity fields and the checkpoint header of the tool.
 $(FIDELITY): bench/fidelity.cpp build/apps/surfadapt/flows.o build/apps/surfadapt/checkpoint.o \
              build/apps/surfadapt/obj_io.o build/apps/surfadapt/format_io.o $(LIB_A)

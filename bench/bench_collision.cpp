@@ -6,11 +6,15 @@
 // relative to its neighbours, none comes near another), and on the same sphere pressed
 // flat to a lens a hundredth as thick, whose two sides face each other nearer than an edge
 // all over, moved by the same field pressed flat. Internal: links the static library. One JSON line per
-// surface: the median of several runs on one thread, and the time per triangle.
+// surface: the median of several runs on one thread, and the time per triangle. With
+// arguments `--dt DT CHECKPOINT...` (a flow run's checkpoints, `surfadapt enright
+// --checkpoints DIR`), the same on each checkpoint's mesh moved by its flow's velocity at
+// its time over DT, instead: `make bench` times Enright's at T/4, T/2 and 3T/4.
 #include "flows.hpp"
 #include "geometry/collision_time.hpp"
 #include "mesh/parallel.hpp"
 
+#include "checkpoint_mesh.hpp"
 #include "jittered_sphere_mesh.hpp"
 
 extern "C" {
@@ -18,6 +22,8 @@ extern "C" {
 }
 
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <vector>
 
 using namespace sfa;
@@ -60,12 +66,32 @@ void time_first_approach(const char *surface, const TriMesh &mesh, const std::ve
     std::fflush(stdout);
 }
 
+int usage()
+{
+    std::fprintf(stderr, "usage: bench_collision [--sphere-only | --dt DT CHECKPOINT...]\n");
+    return 2;
+}
+
 } // namespace
 
-int main(int argc, char **)
+int main(int argc, char **argv)
 {
-    const bool sphere_only = argc > 1; // for a profile of the common case alone
     const ThreadLimit one_thread(1);
+    if (argc > 1 && std::strcmp(argv[1], "--dt") == 0) {
+        const double dt = argc > 2 ? std::atof(argv[2]) : 0;
+        if (!(dt > 0) || argc < 4)
+            return usage();
+        for (int k = 3; k < argc; ++k) {
+            CheckpointMesh checkpoint;
+            if (!read_checkpoint_mesh(argv[k], checkpoint))
+                return 1;
+            time_first_approach(checkpoint.name.c_str(), checkpoint.mesh, checkpoint.velocity, dt);
+        }
+        return 0;
+    }
+    const bool sphere_only = argc > 1; // for a profile of the common case alone
+    if (sphere_only && std::strcmp(argv[1], "--sphere-only") != 0)
+        return usage();
     TriMesh mesh = jittered_sphere_mesh(frequency);
     std::vector<Vec3> velocity = enright_velocity_on_unit_sphere(mesh.pos);
     const double dt = 0.015; // the paper's Enright step

@@ -11,7 +11,8 @@
 # collision-safe too), to show what those cost against the run above them; and those costs
 # again as ratios measured in alternating rounds (cost_ratio, last). Each flow runs also
 # isotropically (once for Enright and T = 6), for the shape errors of the two modes at
-# about equal vertex counts. The shape error of
+# about equal vertex counts; the collision and topology searches are timed alone on the
+# Enright run's meshes. The shape error of
 # each experiment comes from its checkpoints (bench/fidelity.cpp says how it is measured).
 # Last, Enright and vortex T = 6 run again from spheres of five sizes, for how much the
 # figures one triangle or one sample decides vary from run to run (spread, below).
@@ -95,6 +96,13 @@ ratios() {
 
 ratios enright enright
 ratios vortex_t2 vortex --period 2
+
+# The searches collision-safe motion and topology change add, timed alone (one thread) on
+# the Enright run's own meshes at T/4, T/2 and 3T/4, whose thin sheet they must look at
+# closely: the benchmarks' spheres show what every call costs where nothing is near.
+meshes=$checkpoints/enright
+build/bench/bench_collision --dt 0.015 "$meshes/t0.75.obj" "$meshes/t1.5.obj" "$meshes/t2.25.obj" # the run's step
+build/bench/bench_topology --checkpoints "$meshes/t0.75.obj" "$meshes/t1.5.obj" "$meshes/t2.25.obj"
 
 # spread NAME QUARTER ARGS...: the figures that one triangle or one sample decides (the
 # smallest angle, the largest backtrace error) change from run to run: the flows amplify

@@ -7,10 +7,15 @@
 // to a lens a hundredth as thick, whose two sides come nearer than the merge distance
 // towards its rim. Internal: links the static library. One JSON line per surface: the
 // median of several calls on one thread, each on a fresh copy of the surface, per vertex.
+// With arguments `--checkpoints CHECKPOINT...` (a flow run's, `surfadapt enright
+// --checkpoints DIR`), the same on each checkpoint's mesh instead, its mean edge length as
+// the desired length: `make bench` times Enright's at T/4, T/2 and 3T/4, whose thin sheet
+// the merge search must look at closely.
 #include "adapt/topology_change.hpp"
 #include "mesh/components.hpp"
 #include "mesh/parallel.hpp"
 
+#include "checkpoint_mesh.hpp"
 #include "jittered_sphere_mesh.hpp"
 
 extern "C" {
@@ -18,6 +23,7 @@ extern "C" {
 }
 
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 using namespace sfa;
@@ -61,10 +67,23 @@ void time_checks(const char *surface, const TriMesh &mesh)
 
 } // namespace
 
-int main(int argc, char **)
+int main(int argc, char **argv)
 {
-    const bool sphere_only = argc > 1; // for a profile of the common case alone
     const ThreadLimit one_thread(1);
+    if (argc > 1 && std::strcmp(argv[1], "--checkpoints") == 0) {
+        for (int k = 2; k < argc; ++k) {
+            CheckpointMesh checkpoint;
+            if (!read_checkpoint_mesh(argv[k], checkpoint))
+                return 1;
+            time_checks(checkpoint.name.c_str(), checkpoint.mesh);
+        }
+        return 0;
+    }
+    const bool sphere_only = argc > 1; // for a profile of the common case alone
+    if (sphere_only && std::strcmp(argv[1], "--sphere-only") != 0) {
+        std::fprintf(stderr, "usage: bench_topology [--sphere-only | --checkpoints CHECKPOINT...]\n");
+        return 2;
+    }
     TriMesh mesh = jittered_sphere_mesh(frequency);
     time_checks("jittered_sphere", mesh);
     if (sphere_only)
