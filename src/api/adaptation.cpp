@@ -115,6 +115,7 @@ SFA_EXPORT int sfa_adapt(sfa_surface *s)
         s->origins.after.swap(after);
         s->counts_set_by = "sfa_adapt";
         s->near_sheet.swap(near_sheet);
+        s->collision_blocks = BlockPartition();
         std::swap(s->components, components);
         s->seconds_spent += counts.seconds;
         s->volume_correction = counts.volume_correction;

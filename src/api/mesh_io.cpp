@@ -41,6 +41,7 @@ SFA_EXPORT int sfa_set_mesh(sfa_surface *s, int32_t nverts, const double *xyz, i
         s->constraints = Constraints();
         s->origins = OriginsRecord();
         s->near_sheet.clear();
+        s->collision_blocks = BlockPartition();
     });
 }
 

@@ -82,7 +82,7 @@ SFA_EXPORT int sfa_move(sfa_surface *s, double dt, double *dt_taken)
         const double safety = s->params.get(Param::fold_safety);
         Step step = collision_safe(s->params)
                         ? collision_safe_explicit_step(s->mesh, s->velocity, dt, safety, s->index_base,
-                                                       in_contact(s->params))
+                                                       in_contact(s->params), &s->collision_blocks)
                         : explicit_step(s->mesh, s->velocity, dt, safety, s->index_base);
         s->mesh.pos.swap(step.positions);
         *dt_taken = step.dt_taken;
@@ -102,7 +102,8 @@ SFA_EXPORT int sfa_advect(sfa_surface *s, sfa_velocity_fn f, void *ctx, double t
         };
         const double safety = s->params.get(Param::fold_safety);
         Step step = collision_safe(s->params)
-                        ? collision_safe_rk4_step(s->mesh, field, t, dt, safety, s->index_base, in_contact(s->params))
+                        ? collision_safe_rk4_step(s->mesh, field, t, dt, safety, s->index_base, in_contact(s->params),
+                                                  &s->collision_blocks)
                         : rk4_step(s->mesh, field, t, dt, safety, s->index_base);
         s->mesh.pos.swap(step.positions);
         *dt_taken = step.dt_taken;

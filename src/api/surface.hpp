@@ -9,6 +9,7 @@
 #include "adapt/surface_data.hpp"
 #include "adapt/topology_change.hpp"
 #include "geometry/analysis.hpp"
+#include "geometry/block_partition.hpp"
 #include "mesh/components.hpp"
 #include "mesh/tri_mesh.hpp"
 
@@ -55,6 +56,10 @@ struct sfa_surface {
     // found them, for the sfa_smooth calls until the next; empty if the connectivity
     // changed since (sfa_set_mesh).
     std::vector<char> near_sheet;
+    // The triangles as collision-safe motion's search dealt them into blocks, kept for the
+    // steps until the triangles change (sfa_set_mesh, sfa_adapt drop it): it spares the
+    // search a seventh of its work (geometry/block_partition.hpp).
+    sfa::BlockPartition collision_blocks;
     // Memory for the analyses of sfa_smooth and sfa_adapt, kept so that a flow, which calls
     // them on every step, does not allocate it anew each time; its contents mean nothing
     // between calls.

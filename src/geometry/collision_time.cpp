@@ -252,7 +252,7 @@ bool earlier(const Approach &a, const Approach &b)
 
 // first_approach and first_approach_with_contacts: `contacts` and `among` may be null.
 Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double contact_gap,
-                           std::vector<Approach> *contacts, const std::vector<int32_t> *among)
+                           std::vector<Approach> *contacts, const std::vector<int32_t> *among, BlockPartition *kept)
 {
     Approach first;
     first.time = dt;
@@ -376,7 +376,7 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
         for (int32_t t = 0; t < n; ++t)
             swept[t] = swept_of(t);
-        for_each_pair_that_may_meet(swept, look_at);
+        for_each_pair_that_may_meet(swept, look_at, kept);
     }
     for (const Approach &a : per_thread)
         if (earlier(a, first))
@@ -395,16 +395,16 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
 } // namespace
 
 Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt,
-                        const std::vector<int32_t> *among)
+                        const std::vector<int32_t> *among, BlockPartition *kept)
 {
-    return approach_of_pairs(mesh, velocity, dt, 0, nullptr, among);
+    return approach_of_pairs(mesh, velocity, dt, 0, nullptr, among, kept);
 }
 
 Approach first_approach_with_contacts(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt,
                                       double contact_gap, std::vector<Approach> &contacts,
-                                      const std::vector<int32_t> *among)
+                                      const std::vector<int32_t> *among, BlockPartition *kept)
 {
-    return approach_of_pairs(mesh, velocity, dt, contact_gap, &contacts, among);
+    return approach_of_pairs(mesh, velocity, dt, contact_gap, &contacts, among, kept);
 }
 
 } // namespace sfa

@@ -16,6 +16,7 @@
 // plane fixed at the start is soon crossed by their turning.
 #pragma once
 
+#include "geometry/block_partition.hpp"
 #include "mesh/tri_mesh.hpp"
 
 #include <limits>
@@ -41,16 +42,18 @@ struct Approach {
 // already meet have no such plane and are not limited. The pairs are found by
 // their swept boxes over [0, dt] (swept_pairs.hpp); the result does not depend on the
 // number of threads. With `among`, only the pairs of which one triangle at least is in it
-// (distinct triangles) are looked at.
+// (distinct triangles) are looked at. Otherwise, with `kept`, the triangles are dealt into
+// blocks as it holds them, or it comes to hold them (block_partition.hpp; for a caller whose
+// triangles stay the same between searches).
 Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt,
-                        const std::vector<int32_t> *among = nullptr);
+                        const std::vector<int32_t> *among = nullptr, BlockPartition *kept = nullptr);
 
 // The same, except that a pair nearer than contact_gap times its size (its longest edge)
 // that would limit the step is put into `contacts` (sorted by its triangles) instead of
-// limiting it: motion/safe_motion moves the two together. With `among`, only the pairs of
-// which one triangle at least is in it (distinct triangles) are looked at.
+// limiting it: motion/safe_motion moves the two together. `among` and `kept` as for
+// first_approach.
 Approach first_approach_with_contacts(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt,
                                       double contact_gap, std::vector<Approach> &contacts,
-                                      const std::vector<int32_t> *among = nullptr);
+                                      const std::vector<int32_t> *among = nullptr, BlockPartition *kept = nullptr);
 
 } // namespace sfa

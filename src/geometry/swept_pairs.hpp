@@ -13,6 +13,7 @@
 // each block's frame 1.5 times; unswept boxes, which would be unsafe, 1.35 times.)
 #pragma once
 
+#include "geometry/block_partition.hpp"
 #include "geometry/box_pairs.hpp"
 #include "mesh/fill_buffer.hpp"
 #include "mesh/parallel.hpp"
@@ -248,12 +249,60 @@ inline float nearest_float(double x)
 // 6 and 16 longer); 4 took 10 % longer.
 constexpr double swept_pairs_block_size = 12;
 
+namespace detail {
+
+// Deals the triangles into blocks of swept_pairs_block_size times `edge` (a triangle's
+// size), from the lowest corner of triangle first_finite's start box.
+template <class Allocator>
+BlockPartition deal_into_blocks(const std::vector<SweptTriangle, Allocator> &triangles, double edge,
+                                int32_t first_finite)
+{
+    const int32_t n = static_cast<int32_t>(triangles.size());
+    BlockPartition made;
+    // Each triangle's block is that of its start box's lowest corner; the blocks numbered
+    // in the order in which triangles first fall in them (neighbours in the mesh's order
+    // are often in one block), and the triangles counting-sorted by block: less than half
+    // the time of sorting them by key on bench_collision's sphere. Each block is cut into
+    // eight octants, its parts, each a run of triangles in increasing order, so that a
+    // neighbouring block gives its guests from the parts that can reach it alone.
+    // A corner's half block comes from a product with the inverse size rather than
+    // CellFrame::cell_of's division: any rule that gives each triangle one block will do.
+    const Vec3 blocks_origin = triangles[first_finite].start[0];
+    const double halves_per_length = 2 / (swept_pairs_block_size * edge);
+    std::vector<uint64_t> key(static_cast<size_t>(n));
+    std::vector<uint8_t> octant(static_cast<size_t>(n));
+#pragma omp parallel for num_threads(loop_threads()) schedule(static)
+    for (int32_t t = 0; t < n; ++t) {
+        const Vec3 at = (triangles[t].start[0] - blocks_origin) * halves_per_length;
+        GridCell half = {CellFrame::cell_number(at[0]), CellFrame::cell_number(at[1]), CellFrame::cell_number(at[2])},
+                 block;
+        octant[t] = static_cast<uint8_t>((half[0] & 1) | (half[1] & 1) << 1 | (half[2] & 1) << 2);
+        for (int a = 0; a < 3; ++a)
+            block[a] = half[a] >= 0 ? half[a] / 2 : -((1 - half[a]) / 2); // rounded down
+        key[t] = cell_key(block);
+    }
+    std::vector<int32_t> block_of;
+    made.blocks = detail::number_by_key(key, block_of, loop_threads());
+    // Part p of block b is number 8 b + p; its triangles are order[part_start[8 b + p]] on.
+    sort_into_parts(
+        n, 8 * static_cast<size_t>(made.blocks),
+        [&](int32_t t) { return 8 * static_cast<size_t>(block_of[t]) + octant[t]; }, loop_threads(),
+        made.part_start, made.order);
+    made.triangles = n;
+    return made;
+}
+
+} // namespace detail
+
 // Calls visit(s, t, thread), s < t, once for every two triangles that share no corner and
 // whose swept boxes overlap in the frame of the block one of them lies in (so at least for
 // every two that share no corner and can meet over the step), from parallel loops;
-// `thread` is the calling thread's index for visit's own scratch.
+// `thread` is the calling thread's index for visit's own scratch. With `kept`, the blocks
+// are those it holds if it deals as many triangles and has served fewer than
+// block_partition_searches searches; otherwise they are made and it holds them.
 template <class Allocator, class Visit>
-void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &triangles, Visit &&visit)
+void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &triangles, Visit &&visit,
+                                 BlockPartition *kept = nullptr)
 {
     using detail::nearest_float, detail::widen;
     const int32_t n = static_cast<int32_t>(triangles.size());
@@ -285,36 +334,17 @@ void for_each_pair_that_may_meet(const std::vector<SweptTriangle, Allocator> &tr
         ++first_finite;
     if (!(edge > 0) || first_finite == n)
         return; // every triangle a point at rest, or every one NaN: none comes to meet another
-    // Each triangle's block is that of its start box's lowest corner; the blocks numbered
-    // in the order in which triangles first fall in them (neighbours in the mesh's order
-    // are often in one block), and the triangles counting-sorted by block: less than half
-    // the time of sorting them by key on bench_collision's sphere. Each block is cut into
-    // eight octants, its parts, each a run of triangles in increasing order, so that a
-    // neighbouring block gives its guests from the parts that can reach it alone.
-    // A corner's half block comes from a product with the inverse size rather than
-    // CellFrame::cell_of's division: any rule that gives each triangle one block will do.
-    const Vec3 blocks_origin = triangles[first_finite].start[0];
-    const double halves_per_length = 2 / (swept_pairs_block_size * edge);
-    std::vector<uint64_t> key(static_cast<size_t>(n));
-    std::vector<uint8_t> octant(static_cast<size_t>(n));
-#pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t t = 0; t < n; ++t) {
-        const Vec3 at = (triangles[t].start[0] - blocks_origin) * halves_per_length;
-        GridCell half = {CellFrame::cell_number(at[0]), CellFrame::cell_number(at[1]), CellFrame::cell_number(at[2])},
-                 block;
-        octant[t] = static_cast<uint8_t>((half[0] & 1) | (half[1] & 1) << 1 | (half[2] & 1) << 2);
-        for (int a = 0; a < 3; ++a)
-            block[a] = half[a] >= 0 ? half[a] / 2 : -((1 - half[a]) / 2); // rounded down
-        key[t] = cell_key(block);
+    BlockPartition made;
+    if (!(kept && kept->triangles == n && kept->searches < block_partition_searches)) {
+        made = detail::deal_into_blocks(triangles, edge, first_finite);
+        if (kept)
+            *kept = std::move(made);
     }
-    std::vector<int32_t> block_of;
-    const int32_t blocks = detail::number_by_key(key, block_of, loop_threads());
-    // Part p of block b is number 8 b + p; its triangles are order[part_start[8 b + p]] on.
-    std::vector<int32_t> part_start, order;
-    sort_into_parts(
-        n, 8 * static_cast<size_t>(blocks),
-        [&](int32_t t) { return 8 * static_cast<size_t>(block_of[t]) + octant[t]; }, loop_threads(), part_start,
-        order);
+    const BlockPartition &partition = kept ? *kept : made;
+    if (kept)
+        ++kept->searches;
+    const int32_t blocks = partition.blocks;
+    const std::vector<int32_t> &part_start = partition.part_start, &order = partition.order;
     const auto block_start = [&](int32_t b) { return part_start[8 * static_cast<size_t>(b)]; };
 
     // Each block's frame (its triangles' mean displacement); for each of its parts what

@@ -63,7 +63,7 @@ std::vector<int32_t> retimed_triangles(const TriMesh &mesh, const std::vector<Ve
 // the first approach of the rest, the contacts left after the last round among them: of
 // the pairs with a retimed corner alone where the first round found nothing but contacts
 // limiting the step.
-Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity, double dt)
+Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity, double dt, BlockPartition *blocks)
 {
     const std::vector<Vec3> own = velocity;
     std::vector<int32_t> parent(own.size());
@@ -73,14 +73,15 @@ Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity
     bool only_contacts_limit = false; // in the first round, only contacts would limit the step
     for (int round = 0; round < max_contact_rounds; ++round) {
         const Approach first =
-            first_approach_with_contacts(mesh, velocity, dt, contact_gap_ratio, contacts, round ? &changed : nullptr);
+            first_approach_with_contacts(mesh, velocity, dt, contact_gap_ratio, contacts, round ? &changed : nullptr,
+                                         blocks);
         if (round == 0)
             only_contacts_limit = !(first.time < dt);
         if (contacts.empty()) {
             if (round == 0)
                 return first;
             if (!only_contacts_limit)
-                return first_approach(mesh, velocity, dt);
+                return first_approach(mesh, velocity, dt, nullptr, blocks);
             // No pair that kept its velocities limits the step: in the first round no pair
             // but the contacts did, and a contact whose corners all kept their velocities
             // moves as one. So only the pairs with a retimed corner are looked at again
@@ -117,7 +118,7 @@ Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity
                 changed.push_back(f);
         }
     }
-    return first_approach(mesh, velocity, dt);
+    return first_approach(mesh, velocity, dt, nullptr, blocks);
 }
 
 // True if the step to `moved` made two triangles meet that did not before, one of them with
@@ -153,12 +154,12 @@ bool zones_made_a_crossing(const TriMesh &mesh, const std::vector<Vec3> &velocit
 } // namespace
 
 Step collision_safe_explicit_step(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double safety,
-                                  int32_t index_base, bool contact)
+                                  int32_t index_base, bool contact, BlockPartition *blocks)
 {
     Step step = explicit_step(mesh, velocity, dt, safety, index_base);
     std::vector<Vec3> moving = velocity;
-    const Approach a = contact ? move_contacts_together(mesh, moving, step.dt_taken)
-                               : first_approach(mesh, moving, step.dt_taken);
+    const Approach a = contact ? move_contacts_together(mesh, moving, step.dt_taken, blocks)
+                               : first_approach(mesh, moving, step.dt_taken, nullptr, blocks);
     const bool zoned = moving != velocity;
     if (zoned) // zones moving as one may fold a triangle between them and the rest
         step = explicit_step(mesh, moving, step.dt_taken, safety, index_base);
@@ -169,12 +170,12 @@ Step collision_safe_explicit_step(const TriMesh &mesh, const std::vector<Vec3> &
         require_valid_step(mesh, step.positions, step.dt_taken, index_base);
     }
     if (zoned && zones_made_a_crossing(mesh, velocity, moving, step.positions))
-        return collision_safe_explicit_step(mesh, velocity, dt, safety, index_base, false); // without contact
+        return collision_safe_explicit_step(mesh, velocity, dt, safety, index_base, false, blocks); // without contact
     return step;
 }
 
 Step collision_safe_rk4_step(const TriMesh &mesh, const VelocityField &field, double t, double dt, double safety,
-                             int32_t index_base, bool contact)
+                             int32_t index_base, bool contact, BlockPartition *blocks)
 {
     // The RK4 mean velocity changes with the step only at higher order, so a step a little
     // shorter than the collision-free time of the last try is nearly always free.
@@ -184,8 +185,8 @@ Step collision_safe_rk4_step(const TriMesh &mesh, const VelocityField &field, do
         Step step = rk4_step(mesh, field, t, h, safety, index_base);
         const std::vector<Vec3> velocity = mean_velocity(mesh, step);
         std::vector<Vec3> moving = velocity;
-        const Approach a = contact ? move_contacts_together(mesh, moving, step.dt_taken)
-                                   : first_approach(mesh, moving, step.dt_taken);
+        const Approach a = contact ? move_contacts_together(mesh, moving, step.dt_taken, blocks)
+                                   : first_approach(mesh, moving, step.dt_taken, nullptr, blocks);
         if (moving != velocity) {
             // Zones moving as one may fold a triangle sooner: then a shorter Runge-Kutta step.
             const Step held = explicit_step(mesh, moving, step.dt_taken, safety, index_base);
@@ -197,7 +198,7 @@ Step collision_safe_rk4_step(const TriMesh &mesh, const VelocityField &field, do
         }
         if (a.time >= step.dt_taken) {
             if (moving != velocity && zones_made_a_crossing(mesh, velocity, moving, step.positions))
-                return collision_safe_rk4_step(mesh, field, t, dt, safety, index_base, false); // without contact
+                return collision_safe_rk4_step(mesh, field, t, dt, safety, index_base, false, blocks); // without contact
             return step;
         }
         char when[40];

@@ -4,6 +4,7 @@
 // triangles that share no vertex meet during the step (geometry/collision_time.hpp).
 #pragma once
 
+#include "geometry/block_partition.hpp"
 #include "motion/rk4_step.hpp"
 
 namespace sfa {
@@ -31,14 +32,17 @@ constexpr int max_contact_rounds = 32;
 // stuck_gap_ratio of their size and still closing. With `contact`, the corners of the
 // triangles in contact instead move together: each group of corners that contacts join
 // (an impact zone, Bridson, Fedkiw and Anderson 2002, §7.4) takes the mean of its
-// velocities, so that it moves as one (an inelastic contact, without rotation).
+// velocities, so that it moves as one (an inelastic contact, without rotation). With
+// `blocks`, the search for pairs deals the triangles into blocks as it holds them, or it
+// comes to hold them (geometry/block_partition.hpp): the caller keeps it while the
+// triangles stay the same.
 Step collision_safe_explicit_step(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double safety,
-                                  int32_t index_base, bool contact = false);
+                                  int32_t index_base, bool contact = false, BlockPartition *blocks = nullptr);
 
 // rk4_step, retried with shorter steps until its displacement, seen as linear motion over
 // the step, is collision-free; throws as collision_safe_explicit_step, `t` naming the time.
-// With `contact`, contacts move together as in collision_safe_explicit_step.
+// With `contact` and `blocks`, as in collision_safe_explicit_step.
 Step collision_safe_rk4_step(const TriMesh &mesh, const VelocityField &field, double t, double dt, double safety,
-                             int32_t index_base, bool contact = false);
+                             int32_t index_base, bool contact = false, BlockPartition *blocks = nullptr);
 
 } // namespace sfa

@@ -65,12 +65,12 @@ std::vector<SweptTriangle> swept(const Moving &m)
 }
 
 // The visited pairs; fails on a pair out of order or visited twice.
-std::set<std::pair<int32_t, int32_t>> visited_pairs(const Moving &m)
+std::set<std::pair<int32_t, int32_t>> visited_pairs(const Moving &m, BlockPartition *kept = nullptr)
 {
     std::vector<std::vector<std::pair<int32_t, int32_t>>> by_thread(static_cast<size_t>(loop_threads()));
-    for_each_pair_that_may_meet(swept(m), [&](int32_t s, int32_t t, int thread) {
-        by_thread[static_cast<size_t>(thread)].push_back({s, t});
-    });
+    for_each_pair_that_may_meet(
+        swept(m), [&](int32_t s, int32_t t, int thread) { by_thread[static_cast<size_t>(thread)].push_back({s, t}); },
+        kept);
     std::set<std::pair<int32_t, int32_t>> pairs;
     for (const auto &list : by_thread)
         for (const auto &p : list) {
@@ -113,9 +113,9 @@ Moving crossing_sheets(Numbers &rng)
 }
 
 // Fails unless every two triangles that meet during the step are visited; how many meet.
-int check_meeting_pairs_are_visited(const Moving &m)
+int check_meeting_pairs_are_visited(const Moving &m, BlockPartition *kept = nullptr)
 {
-    const auto pairs = visited_pairs(m);
+    const auto pairs = visited_pairs(m, kept);
     int meeting = 0;
     const std::vector<SweptTriangle> boxes = swept(m);
     for (int32_t s = 0; s < m.count(); ++s)
@@ -139,6 +139,35 @@ void every_pair_that_meets_is_visited_once(void **)
         print_message("%d threads: %d pairs meet\n", threads, meeting);
         assert_true(meeting > 500);
     }
+}
+
+// A search may deal the triangles into blocks as an earlier one did (collision-safe motion
+// keeps them between adaptations): with blocks made where the triangles were, far from
+// where they are now (each thrown up to two sheets' widths away), every pair that meets is
+// still visited. The blocks serve block_partition_searches searches, then are made anew.
+void blocks_kept_from_elsewhere_still_visit_every_pair_that_meets(void **)
+{
+    Numbers rng{7};
+    const Moving m = crossing_sheets(rng);
+    Moving elsewhere = m;
+    for (int32_t t = 0; t < m.count(); ++t) {
+        const Vec3 throw_to = rng.point(2);
+        for (int k = 0; k < 3; ++k)
+            elsewhere.x[3 * t + k] += throw_to;
+    }
+    BlockPartition kept;
+    visited_pairs(elsewhere, &kept);
+    assert_int_equal(kept.triangles, m.count());
+    const std::vector<int32_t> dealt = kept.order;
+    for (int search = 2; search <= block_partition_searches; ++search) {
+        const int meeting = check_meeting_pairs_are_visited(m, &kept);
+        assert_true(meeting > 500);
+        assert_int_equal(kept.searches, search);
+        assert_true(kept.order == dealt); // the same blocks
+    }
+    visited_pairs(m, &kept);
+    assert_int_equal(kept.searches, 1); // made anew, where the triangles are now
+    assert_true(kept.order != dealt);
 }
 
 // Two sheets whose blocks are far apart at rest: a vertical one rushes through a resting
@@ -372,6 +401,7 @@ int main()
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(every_pair_that_meets_is_visited_once),
+        cmocka_unit_test(blocks_kept_from_elsewhere_still_visit_every_pair_that_meets),
         cmocka_unit_test(sheets_that_rush_through_each_other_from_far_are_compared),
         cmocka_unit_test(a_block_is_compared_with_all_its_triangles_reach_in_its_frame),
         cmocka_unit_test(a_surface_moving_as_one_visits_its_neighbours_only),
