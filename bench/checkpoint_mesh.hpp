@@ -33,9 +33,7 @@ inline bool read_checkpoint_mesh(const char *path, CheckpointMesh &out)
         std::fprintf(stderr, "%s\n", error.c_str());
         return false;
     }
-    const sfa_velocity_fn velocity = info.flow == "enright" ? enright_velocity
-                                     : info.flow == "vortex" ? vortex_velocity
-                                                             : nullptr;
+    const sfa_velocity_fn velocity = checkpoint_velocity(info);
     if (!velocity) {
         std::fprintf(stderr, "%s: unknown flow '%s'\n", path, info.flow.c_str());
         return false;

@@ -348,9 +348,7 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "fidelity: %s\n", error.c_str());
         return 1;
     }
-    const sfa_velocity_fn velocity = info.flow == "enright" ? enright_velocity
-                                     : info.flow == "vortex" ? vortex_velocity
-                                                             : nullptr;
+    const sfa_velocity_fn velocity = checkpoint_velocity(info);
     if (!velocity || info.period <= 0 || info.radius <= 0 || info.time < 0) {
         std::fprintf(stderr, "fidelity: %s: unknown flow '%s' or bad period, time or radius\n", path,
                      info.flow.c_str());

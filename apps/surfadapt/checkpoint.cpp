@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "checkpoint.hpp"
+#include "flows.hpp"
 
 #include "obj_io.h"
 
@@ -53,4 +54,9 @@ bool read_checkpoint_header(const std::string &path, Checkpoint &info, std::stri
     }
     info.flow = flow;
     return true;
+}
+
+sfa_velocity_fn checkpoint_velocity(const Checkpoint &info)
+{
+    return info.flow == "enright" ? enright_velocity : info.flow == "vortex" ? vortex_velocity : nullptr;
 }

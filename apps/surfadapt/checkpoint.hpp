@@ -21,3 +21,7 @@ bool save_checkpoint(const sfa_surface *s, const Checkpoint &info, const std::st
 
 // Reads the header line of a file save_checkpoint wrote; false with the reason.
 bool read_checkpoint_header(const std::string &path, Checkpoint &info, std::string &error);
+
+// The velocity field of the checkpoint's flow (flows.hpp), or nullptr for a flow of
+// another name.
+sfa_velocity_fn checkpoint_velocity(const Checkpoint &info);
