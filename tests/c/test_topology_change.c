@@ -259,6 +259,22 @@ static void drops_a_pinch_cuts_off_below_resolution_go_at_once(void **state)
     sfa_destroy(s);
 }
 
+/* Spheres `a` and `b`, b moved `aside` along x, in one surface adapted once at edge length
+ * 0.05 with topology change on (the meshes are freed). */
+static sfa_surface *two_spheres_adapted(sfa_mesh_data a, sfa_mesh_data b, double aside)
+{
+    const double offset[3] = {aside, 0, 0};
+    mesh_translate(&b, offset);
+    mesh_append(&a, &b);
+    mesh_free(&b);
+    sfa_surface *s = make_surface(&a, 0);
+    mesh_free(&a);
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, 0.05));
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_TOPOLOGY_CHANGE, 1));
+    assert_ok(s, sfa_adapt(s));
+    return s;
+}
+
 /* A drop far below what the mesh resolves goes at the start of the call, however finely it
  * is meshed itself, and the bubble beside it stays. The search for such drops stops reading
  * a component's corners once its box is surely too wide (after a first 64 triangles, then
@@ -266,16 +282,7 @@ static void drops_a_pinch_cuts_off_below_resolution_go_at_once(void **state)
 static void a_finely_meshed_tiny_drop_is_removed(void **state)
 {
     (void)state;
-    sfa_mesh_data m = shape_icosphere(3, 0.3), drop = shape_icosphere(2, 0.004);
-    const double aside[3] = {0.5, 0, 0};
-    mesh_translate(&drop, aside);
-    mesh_append(&m, &drop);
-    mesh_free(&drop);
-    sfa_surface *s = make_surface(&m, 0);
-    mesh_free(&m);
-    assert_ok(s, sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, 0.05));
-    assert_ok(s, sfa_set_param(s, SFA_PARAM_TOPOLOGY_CHANGE, 1));
-    assert_ok(s, sfa_adapt(s));
+    sfa_surface *s = two_spheres_adapted(shape_icosphere(3, 0.3), shape_icosphere(2, 0.004), 0.5);
     assert_int_equal((int)measure(s, SFA_MEASURE_DROPS_REMOVED), 1);
     assert_int_equal(components(s), 1);
     assert_all_closed(s);
@@ -288,16 +295,7 @@ static void a_finely_meshed_tiny_drop_is_removed(void **state)
 static void a_surface_of_tiny_drops_alone_stays(void **state)
 {
     (void)state;
-    sfa_mesh_data m = shape_icosphere(1, 0.004), other = shape_icosphere(1, 0.003);
-    const double aside[3] = {0.02, 0, 0};
-    mesh_translate(&other, aside);
-    mesh_append(&m, &other);
-    mesh_free(&other);
-    sfa_surface *s = make_surface(&m, 0);
-    mesh_free(&m);
-    assert_ok(s, sfa_set_param(s, SFA_PARAM_EDGE_LENGTH, 0.05));
-    assert_ok(s, sfa_set_param(s, SFA_PARAM_TOPOLOGY_CHANGE, 1));
-    assert_ok(s, sfa_adapt(s));
+    sfa_surface *s = two_spheres_adapted(shape_icosphere(1, 0.004), shape_icosphere(1, 0.003), 0.02);
     assert_int_equal((int)measure(s, SFA_MEASURE_DROPS_REMOVED), 0);
     assert_int_equal(components(s), 2);
     assert_all_closed(s);
