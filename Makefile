@@ -326,10 +326,10 @@ build/bench/bench_collision build/bench/bench_topology: build/bench/%: bench/%.c
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -Ibench -Iapps/surfadapt -o $@ $< $(BENCH_CHECKPOINT_OBJS) $(TEST_SUPPORT_OBJ) $(LIB_A) -lm
 # The backtrace needs the flows' velocity fields and the checkpoint header of the tool.
-$(FIDELITY): bench/fidelity.cpp build/apps/surfadapt/flows.o build/apps/surfadapt/checkpoint.o \
-             build/apps/surfadapt/obj_io.o build/apps/surfadapt/format_io.o $(LIB_A)
+$(FIDELITY): bench/fidelity.cpp bench/surface_resolution.hpp build/apps/surfadapt/flows.o \
+             build/apps/surfadapt/checkpoint.o build/apps/surfadapt/obj_io.o build/apps/surfadapt/format_io.o $(LIB_A)
 	@mkdir -p $(@D)
-	$(CXX) $(CXXFLAGS) -Iapps/surfadapt -o $@ $^ -lm
+	$(CXX) $(CXXFLAGS) -Iapps/surfadapt -o $@ $(filter-out %.hpp,$^) -lm
 bench: all $(BENCHES) $(FIDELITY)
 	@for b in $(BENCHES); do $$b || exit 1; done
 	@bench/bench_flows.sh

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--worst K] [--by-turn] [--json]
+// fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--worst K] [--by-turn] [--angles-only] [--json]
 //
 // The shape error of a tracked surface, measured by backtracing (issue "many bubbles",
 // item 3). The paper's flows are time-reversible: every point of the exact surface at time
@@ -12,7 +12,10 @@
 // over the triangles' points (each stands for a quarter of its triangle's area), the
 // largest d and the RMS over the vertices alone, and the area-weighted mean of the signed error
 // (|p0 - c| - r) / r, which shows a bias such as a global offset of the surface; and the
-// mesh's smallest and largest angle.
+// mesh's smallest and largest angle, and its smallest angle where it resolves the surface
+// (bench/surface_resolution.hpp), with the share of the area left out for that and how
+// many triangles below 5 degrees lie there. --angles-only gives the angles alone, without
+// the backtrace (which takes minutes on the largest meshes).
 //
 // The mesh is a flow run's checkpoint (surfadapt enright|vortex --checkpoints DIR), whose
 // first line names the flow, its period, the time and the start sphere. The RK4 step is
@@ -23,6 +26,7 @@
 #include "checkpoint.hpp"
 #include "flows.hpp"
 #include "obj_io.h"
+#include "surface_resolution.hpp"
 
 #include <algorithm>
 #include <array>
@@ -88,17 +92,7 @@ std::pair<double, double> angle_range(const sfa_mesh_data &mesh)
 {
     double smallest = 180, largest = 0;
     for (int32_t t = 0; t < mesh.ntris; ++t)
-        for (int k = 0; k < 3; ++k) {
-            const double *a = mesh.xyz + 3 * mesh.tris[3 * t + k], *b = mesh.xyz + 3 * mesh.tris[3 * t + (k + 1) % 3],
-                         *c = mesh.xyz + 3 * mesh.tris[3 * t + (k + 2) % 3];
-            double u[3], w[3];
-            for (int i = 0; i < 3; ++i) {
-                u[i] = b[i] - a[i];
-                w[i] = c[i] - a[i];
-            }
-            const double cross[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-            const double angle = std::atan2(std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]),
-                                            u[0] * w[0] + u[1] * w[1] + u[2] * w[2]) * 180 / 3.14159265358979323846;
+        for (double angle : surface_resolution::triangle_angles(mesh, t)) {
             smallest = std::min(smallest, angle);
             largest = std::max(largest, angle);
         }
@@ -309,9 +303,13 @@ void print_by_turn(const sfa_mesh_data &mesh, const Samples &samples, const std:
     }
 }
 
+// The smallest angle the issue asks every checkpoint to keep, in degrees.
+constexpr double small_angle = 5;
+
 int usage()
 {
-    std::fprintf(stderr, "usage: fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--worst K] [--by-turn] [--json]\n");
+    std::fprintf(stderr, "usage: fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--worst K] [--by-turn] "
+                         "[--angles-only] [--json]\n");
     return 2;
 }
 
@@ -325,7 +323,7 @@ int main(int argc, char **argv)
     int steps_per_period = 1000;
     bool check_step = false, json = false;
     int worst_count = 0;
-    bool by_turn = false;
+    bool by_turn = false, angles_only = false;
     for (int i = 2; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--steps-per-period") && i + 1 < argc)
             steps_per_period = std::atoi(argv[++i]);
@@ -335,6 +333,8 @@ int main(int argc, char **argv)
             worst_count = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--by-turn"))
             by_turn = true;
+        else if (!std::strcmp(argv[i], "--angles-only"))
+            angles_only = true;
         else if (!std::strcmp(argv[i], "--json"))
             json = true;
         else
@@ -360,8 +360,31 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "fidelity: %s\n", message);
         return 1;
     }
-    const Samples samples = sample_mesh(mesh);
     const auto [min_angle, max_angle] = angle_range(mesh);
+    const surface_resolution::AnglesWhereResolved resolved =
+        surface_resolution::angles_where_resolved(mesh, small_angle);
+    char angle_text[300], angle_json[200];
+    std::snprintf(angle_text, sizeof angle_text,
+                  "angles %.2f to %.2f degrees, from %.2f where the surface is resolved (%d triangles below %g "
+                  "degrees, %d of them where it turns by more than a right angle within their size, which is %.2f %% "
+                  "of the area)",
+                  min_angle, max_angle, resolved.smallest, resolved.below, small_angle, resolved.below_unresolved,
+                  100 * resolved.unresolved_area);
+    std::snprintf(angle_json, sizeof angle_json,
+                  "\"min_angle\":%.2f,\"max_angle\":%.2f,\"min_angle_resolved\":%.2f,\"below_5\":%d,"
+                  "\"below_5_unresolved\":%d,\"unresolved_area\":%.2e",
+                  min_angle, max_angle, resolved.smallest, resolved.below, resolved.below_unresolved,
+                  resolved.unresolved_area);
+    if (angles_only) {
+        std::printf("%s: %s, T = %g, t = %g, %d triangles: %s\n", path, info.flow.c_str(), info.period, info.time,
+                    mesh.ntris, angle_text);
+        if (json)
+            std::printf("{\"bench\":\"angles\",\"flow\":\"%s\",\"period\":%g,\"time\":%g,\"triangles\":%d,%s}\n",
+                        info.flow.c_str(), info.period, info.time, mesh.ntris, angle_json);
+        mesh_free(&mesh);
+        return 0;
+    }
+    const Samples samples = sample_mesh(mesh);
     const int32_t nverts = mesh.nverts;
 
     const int steps = std::max(1, static_cast<int>(std::ceil(info.time / info.period * steps_per_period)));
@@ -374,10 +397,10 @@ int main(int argc, char **argv)
     const Figures f = figures_of(samples, errors);
     const double *worst = samples.xyz.data() + 3 * f.worst;
     std::printf("%s: %s, T = %g, t = %g, %d vertices, %zu samples, %d RK4 steps back: d max %.2e, RMS %.2e, "
-                "99th percentile %.2e, vertices' max %.2e and RMS %.2e, bias %+.2e; worst at (%.4f, %.4f, %.4f)%s; angles %.2f to %.2f degrees\n",
+                "99th percentile %.2e, vertices' max %.2e and RMS %.2e, bias %+.2e; worst at (%.4f, %.4f, %.4f)%s; %s\n",
                 path, info.flow.c_str(), info.period, info.time, nverts, samples.weight.size(), steps, f.max, f.rms,
                 f.p99, f.vertex_max, f.vertex_rms, f.bias, worst[0], worst[1], worst[2],
-                f.worst < static_cast<size_t>(samples.vertices) ? ", a vertex" : "", min_angle, max_angle);
+                f.worst < static_cast<size_t>(samples.vertices) ? ", a vertex" : "", angle_text);
     if (worst_count > 0)
         print_worst(samples, errors, worst_count);
     double step_change = 0;
@@ -395,8 +418,8 @@ int main(int argc, char **argv)
     if (json)
         std::printf("{\"bench\":\"fidelity\",\"flow\":\"%s\",\"period\":%g,\"time\":%g,\"vertices\":%d,"
                     "\"samples\":%zu,\"rk4_steps\":%d,\"max\":%.3e,\"rms\":%.3e,\"p99\":%.3e,\"vertex_max\":%.3e,"
-                    "\"vertex_rms\":%.3e,\"bias\":%.3e,\"min_angle\":%.2f,\"max_angle\":%.2f%s}\n",
+                    "\"vertex_rms\":%.3e,\"bias\":%.3e,%s%s}\n",
                     info.flow.c_str(), info.period, info.time, nverts, samples.weight.size(), steps, f.max, f.rms,
-                    f.p99, f.vertex_max, f.vertex_rms, f.bias, min_angle, max_angle, step_figure);
+                    f.p99, f.vertex_max, f.vertex_rms, f.bias, angle_json, step_figure);
     return 0;
 }

@@ -62,6 +62,42 @@ check "and ends within 2 times the start mesh's RMS error, as the whole run does
 check "a checkpoint of another flow is refused with the reason" \
   sh -c "'$tool' vortex --period 2 --resume '$work/tracked/t1.5.obj' 2>&1 | grep -q 'a checkpoint of enright with T = 3, not of this run (vortex, T = 2)'"
 
+# Angles where the mesh resolves the surface (--angles-only; bench/surface_resolution.hpp).
+"$fidelity" "$work/tracked/t0.obj" --angles-only --json >"$work/sphere_angles.txt"
+cat "$work/sphere_angles.txt"
+sphere_resolved() {
+  [ "$(figure "$work/sphere_angles.txt" unresolved_area)" = "0.00e+00" ] &&
+    [ "$(figure "$work/sphere_angles.txt" min_angle_resolved)" = "$(figure "$work/sphere_angles.txt" min_angle)" ]
+}
+check "on the start sphere the surface is resolved everywhere: no triangle left out of the smallest angle" sphere_resolved
+# A hairpin: a strip folded back onto itself, its two layers 0.005 apart and joined at the
+# fold by needles (3 degrees) across the gap; the layers are right triangles of edge
+# 0.125. The needles bend round something smaller than themselves, the layers do not.
+awk 'BEGIN {
+  print "# surfadapt checkpoint: flow enright period 3 time 0 centre 0 0 0 radius 1"
+  for (j = 0; j <= 2; ++j) for (i = 0; i <= 8; ++i) printf "v %.17g %.17g 0\n", i / 8, j / 8
+  for (j = 0; j <= 2; ++j) for (i = 0; i <= 8; ++i) printf "v %.17g %.17g 0.005\n", i < 8 ? i / 8 : 0.995, j / 8
+  for (layer = 0; layer < 2; ++layer) for (j = 0; j < 2; ++j) for (i = 0; i < 8; ++i) {
+    a = 27 * layer + 9 * j + i + 1; b = a + 1; c = a + 9; d = c + 1
+    if (layer == 0) { print "f", a, c, b; print "f", b, c, d } else { print "f", a, b, c; print "f", b, d, c }
+  }
+  for (j = 0; j < 2; ++j) {
+    a = 9 * j + 9; c = a + 9; e = 27 + a; g = 27 + c
+    print "f", a, c, e; print "f", c, g, e
+  }
+}' >"$work/hairpin.obj"
+"$fidelity" "$work/hairpin.obj" --angles-only --json >"$work/hairpin_angles.txt"
+cat "$work/hairpin_angles.txt"
+hairpin_judged() {
+  below "$(figure "$work/hairpin_angles.txt" min_angle)" 5 &&
+    [ "$(figure "$work/hairpin_angles.txt" below_5)" = 4 ] &&
+    [ "$(figure "$work/hairpin_angles.txt" below_5_unresolved)" = 4 ] &&
+    below 44.9 "$(figure "$work/hairpin_angles.txt" min_angle_resolved)" &&
+    below 0 "$(figure "$work/hairpin_angles.txt" unresolved_area)" &&
+    below "$(figure "$work/hairpin_angles.txt" unresolved_area)" 0.5
+}
+check "on a hairpin the needles across its fold are left out as unresolved, the layers' right triangles kept" hairpin_judged
+
 check "a mesh that is not a checkpoint is refused with the reason" \
   sh -c "printf 'v 0 0 0\n' >'$work/plain.obj'; '$fidelity' '$work/plain.obj' 2>&1 | grep -q 'not a surfadapt checkpoint'"
 

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Where a mesh does not resolve its surface, for judging its angles (issue "many bubbles",
+// item 4: "keep the angles within the paper's bounds everywhere the mesh resolves the
+// sheet"). A triangle is in such a place when the surface turns by more than a right angle
+// within the triangle's own size: the surface connected to it within its longest edge of
+// its centroid holds two triangles whose normals are more than 90 degrees apart. That is
+// the rim of a sheet thinner than the triangle (its two sides face each other there), a
+// filament thinner than it, or a crease sharper than a right angle; in each the triangle
+// would have to bend round something smaller than itself, and no placement of its corners
+// gives it good angles. On a mesh that resolves its surface (a sphere of 15 edges round
+// turns by 24 degrees an edge) no triangle qualifies. Internal to the benchmarks: it uses
+// the library's closest points.
+#pragma once
+
+#include "geometry/distance.hpp"
+#include "surfadapt.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace surface_resolution {
+
+using sfa::Vec3;
+
+inline Vec3 corner(const sfa_mesh_data &mesh, int32_t t, int k)
+{
+    return Vec3(mesh.xyz + 3 * static_cast<size_t>(mesh.tris[3 * static_cast<size_t>(t) + k]));
+}
+
+// The three angles of triangle t, in degrees.
+inline std::array<double, 3> triangle_angles(const sfa_mesh_data &mesh, int32_t t)
+{
+    std::array<double, 3> angles;
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 a = corner(mesh, t, k), u = corner(mesh, t, (k + 1) % 3) - a, w = corner(mesh, t, (k + 2) % 3) - a;
+        angles[k] = std::atan2(u.cross(w).norm(), u.dot(w)) * 180 / 3.14159265358979323846;
+    }
+    return angles;
+}
+
+// 1 for each triangle near which the surface turns by more than a right angle within its
+// own size (above), 0 for the others. The surface round triangle t is what a walk from t
+// across edges reaches through triangles that come nearer to t's centroid than t's longest
+// edge: the far side of a thin sheet, across the sheet, is not part of it (each side of a
+// flat film may be meshed well), the sheet's rim is. A triangle without area has no
+// normal and faces against nothing. The mesh is a closed or open manifold (a flow's
+// checkpoint).
+inline std::vector<char> unresolved_triangles(const sfa_mesh_data &mesh)
+{
+    const int32_t n = mesh.ntris;
+    // Each triangle's neighbour across each of its edges (-1 on a boundary).
+    std::vector<std::pair<uint64_t, int32_t>> sides; // (edge key, 3 t + k)
+    sides.reserve(3 * static_cast<size_t>(n));
+    for (int32_t t = 0; t < n; ++t)
+        for (int k = 0; k < 3; ++k) {
+            const uint64_t a = static_cast<uint32_t>(mesh.tris[3 * static_cast<size_t>(t) + k]),
+                           b = static_cast<uint32_t>(mesh.tris[3 * static_cast<size_t>(t) + (k + 1) % 3]);
+            sides.push_back({std::min(a, b) << 32 | std::max(a, b), 3 * t + k});
+        }
+    std::sort(sides.begin(), sides.end());
+    std::vector<int32_t> across(3 * static_cast<size_t>(n), -1);
+    for (size_t i = 0; i + 1 < sides.size(); ++i)
+        if (sides[i].first == sides[i + 1].first) {
+            across[sides[i].second] = sides[i + 1].second / 3;
+            across[sides[i + 1].second] = sides[i].second / 3;
+        }
+    std::vector<Vec3> normal(n);
+    for (int32_t t = 0; t < n; ++t)
+        normal[t] = (corner(mesh, t, 1) - corner(mesh, t, 0)).cross(corner(mesh, t, 2) - corner(mesh, t, 0)).normalized();
+
+    // The walk from each triangle visits at most max_visits (a ball holds a few dozen on a
+    // mesh of any quality; a fan of hundreds of slivers stops there), each compared with
+    // those before it.
+    constexpr size_t max_visits = 512;
+    std::vector<char> unresolved(n, 0);
+    std::vector<int32_t> visited;
+    for (int32_t t = 0; t < n; ++t) {
+        const Vec3 a = corner(mesh, t, 0), b = corner(mesh, t, 1), c = corner(mesh, t, 2);
+        const Vec3 centroid = (a + b + c) / 3;
+        const double radius = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+        visited.assign(1, t);
+        for (size_t i = 0; i < visited.size() && visited.size() < max_visits && !unresolved[t]; ++i)
+            for (int k = 0; k < 3; ++k) {
+                const int32_t next = across[3 * static_cast<size_t>(visited[i]) + k];
+                if (next < 0 || std::find(visited.begin(), visited.end(), next) != visited.end())
+                    continue;
+                const Vec3 nearest = sfa::closest_point_on_triangle(centroid, corner(mesh, next, 0),
+                                                                    corner(mesh, next, 1), corner(mesh, next, 2));
+                if (!((nearest - centroid).norm() <= radius))
+                    continue;
+                for (int32_t seen : visited)
+                    if (normal[seen].dot(normal[next]) < 0)
+                        unresolved[t] = 1;
+                visited.push_back(next);
+            }
+    }
+    return unresolved;
+}
+
+// The angles where the mesh resolves its surface, and how many below `threshold` degrees
+// lie where it does not.
+struct AnglesWhereResolved {
+    double smallest = 180;        // the smallest angle of any triangle not marked
+    int32_t below = 0;            // triangles with an angle below the threshold
+    int32_t below_unresolved = 0; // of them, those marked
+    double unresolved_area = 0;   // the marked triangles' share of the area
+};
+
+inline AnglesWhereResolved angles_where_resolved(const sfa_mesh_data &mesh, double threshold)
+{
+    const std::vector<char> unresolved = unresolved_triangles(mesh);
+    AnglesWhereResolved result;
+    double area = 0, unresolved_area = 0;
+    for (int32_t t = 0; t < mesh.ntris; ++t) {
+        const std::array<double, 3> angles = triangle_angles(mesh, t);
+        const double smallest = *std::min_element(angles.begin(), angles.end());
+        const double size = (corner(mesh, t, 1) - corner(mesh, t, 0)).cross(corner(mesh, t, 2) - corner(mesh, t, 0)).norm();
+        area += size;
+        if (unresolved[t])
+            unresolved_area += size;
+        else
+            result.smallest = std::min(result.smallest, smallest);
+        if (smallest < threshold) {
+            ++result.below;
+            result.below_unresolved += unresolved[t];
+        }
+    }
+    result.unresolved_area = area > 0 ? unresolved_area / area : 0;
+    return result;
+}
+
+} // namespace surface_resolution
