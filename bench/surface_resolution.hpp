@@ -92,8 +92,10 @@ inline std::vector<char> unresolved_triangles(const sfa_mesh_data &mesh)
                                                                     corner(mesh, next, 1), corner(mesh, next, 2));
                 if (!((nearest - centroid).norm() <= radius))
                     continue;
+                // More than a right angle, by more than round-off: a right-angled crease
+                // (a machined part's edge) has normals exactly square to each other.
                 for (int32_t seen : visited)
-                    if (normal[seen].dot(normal[next]) < 0)
+                    if (normal[seen].dot(normal[next]) < -1e-9)
                         unresolved[t] = 1;
                 visited.push_back(next);
             }
