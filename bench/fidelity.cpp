@@ -12,9 +12,9 @@
 // over the triangles' points (each stands for a quarter of its triangle's area), the
 // largest d and the RMS over the vertices alone, and the area-weighted mean of the signed error
 // (|p0 - c| - r) / r, which shows a bias such as a global offset of the surface; and the
-// mesh's smallest and largest angle, and its smallest angle where it resolves the surface
-// (bench/surface_resolution.hpp), with the share of the area left out for that and how
-// many triangles below 5 degrees lie there. --angles-only gives the angles alone, without
+// mesh's smallest and largest angle; and where the mesh resolves the surface
+// (bench/surface_resolution.hpp), the largest and RMS d and the smallest angle, with the
+// share of the area left out for that and how many triangles below 5 degrees lie there. --angles-only gives the angles alone, without
 // the backtrace (which takes minutes on the largest meshes).
 //
 // The mesh is a flow run's checkpoint (surfadapt enright|vortex --checkpoints DIR), whose
@@ -43,22 +43,27 @@ namespace {
 struct Samples {
     std::vector<double> xyz;    // 3 per sample
     std::vector<double> weight; // area each stands for; 0 for vertices and edge midpoints
+    std::vector<char> resolved; // on a triangle where the surface is resolved (surface_resolution.hpp)
     int32_t vertices = 0;       // the first samples are the vertices
 };
 
-Samples sample_mesh(const sfa_mesh_data &mesh)
+// The samples of the mesh; `unresolved` marks its triangles where the surface is not
+// resolved, and a sample counts as resolved if any triangle it lies on is.
+Samples sample_mesh(const sfa_mesh_data &mesh, const std::vector<char> &unresolved)
 {
     Samples samples;
     samples.vertices = mesh.nverts;
     samples.xyz.assign(mesh.xyz, mesh.xyz + 3 * static_cast<size_t>(mesh.nverts));
     samples.weight.assign(mesh.nverts, 0.0);
+    samples.resolved.assign(mesh.nverts, 0);
     const auto add = [&](const double *a, const double *b, const double *c, double wa, double wb, double wc,
-                         double weight) {
+                         double weight, bool resolved) {
         for (int k = 0; k < 3; ++k)
             samples.xyz.push_back(wa * a[k] + wb * b[k] + wc * c[k]);
         samples.weight.push_back(weight);
+        samples.resolved.push_back(resolved);
     };
-    std::vector<uint64_t> edges;
+    std::vector<std::pair<uint64_t, char>> edges; // (key, whether the triangle is resolved)
     for (int32_t t = 0; t < mesh.ntris; ++t) {
         const int32_t *v = mesh.tris + 3 * t;
         const double *a = mesh.xyz + 3 * v[0], *b = mesh.xyz + 3 * v[1], *c = mesh.xyz + 3 * v[2];
@@ -69,20 +74,25 @@ Samples sample_mesh(const sfa_mesh_data &mesh)
         }
         const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
         const double quarter = 0.125 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        add(a, b, c, 1.0 / 3, 1.0 / 3, 1.0 / 3, quarter);
-        add(a, b, c, 2.0 / 3, 1.0 / 6, 1.0 / 6, quarter);
-        add(a, b, c, 1.0 / 6, 2.0 / 3, 1.0 / 6, quarter);
-        add(a, b, c, 1.0 / 6, 1.0 / 6, 2.0 / 3, quarter);
+        const bool resolved = !unresolved[t];
+        add(a, b, c, 1.0 / 3, 1.0 / 3, 1.0 / 3, quarter, resolved);
+        add(a, b, c, 2.0 / 3, 1.0 / 6, 1.0 / 6, quarter, resolved);
+        add(a, b, c, 1.0 / 6, 2.0 / 3, 1.0 / 6, quarter, resolved);
+        add(a, b, c, 1.0 / 6, 1.0 / 6, 2.0 / 3, quarter, resolved);
         for (int k = 0; k < 3; ++k) {
             const uint64_t i = static_cast<uint32_t>(v[k]), j = static_cast<uint32_t>(v[(k + 1) % 3]);
-            edges.push_back(std::min(i, j) << 32 | std::max(i, j));
+            edges.push_back({std::min(i, j) << 32 | std::max(i, j), resolved});
+            samples.resolved[v[k]] |= resolved;
         }
     }
     std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    for (uint64_t e : edges) {
-        const double *a = mesh.xyz + 3 * (e >> 32), *b = mesh.xyz + 3 * (e & 0xffffffffu);
-        add(a, b, a, 0.5, 0.5, 0.0, 0.0);
+    for (size_t e = 0; e < edges.size(); ++e) {
+        const uint64_t key = edges[e].first;
+        bool resolved = edges[e].second;
+        for (; e + 1 < edges.size() && edges[e + 1].first == key; ++e)
+            resolved |= edges[e + 1].second;
+        const double *a = mesh.xyz + 3 * (key >> 32), *b = mesh.xyz + 3 * (key & 0xffffffffu);
+        add(a, b, a, 0.5, 0.5, 0.0, 0.0, resolved);
     }
     return samples;
 }
@@ -128,6 +138,7 @@ void backtrace(sfa_velocity_fn velocity, double period, double t, int steps, std
 
 struct Figures {
     double max = 0, rms = 0, p99 = 0, vertex_max = 0, vertex_rms = 0, bias = 0;
+    double resolved_max = 0, resolved_rms = 0; // of the samples where the surface is resolved
     size_t worst = 0; // the sample of the largest error
 };
 
@@ -147,13 +158,18 @@ Figures figures_of(const Samples &samples, const std::vector<double> &signed_err
 {
     const size_t n = samples.weight.size();
     Figures f;
-    double area = 0, square = 0, sum = 0;
+    double area = 0, square = 0, sum = 0, resolved_area = 0, resolved_square = 0;
     std::vector<std::pair<double, double>> weighted; // (d, weight) of the triangles' points
     for (size_t i = 0; i < n; ++i) {
         const double d = std::abs(signed_error[i]);
         if (d > f.max) {
             f.max = d;
             f.worst = i;
+        }
+        if (samples.resolved[i]) {
+            f.resolved_max = std::max(f.resolved_max, d);
+            resolved_area += samples.weight[i];
+            resolved_square += samples.weight[i] * d * d;
         }
         if (i < static_cast<size_t>(samples.vertices)) {
             f.vertex_max = std::max(f.vertex_max, d);
@@ -167,6 +183,7 @@ Figures figures_of(const Samples &samples, const std::vector<double> &signed_err
         }
     }
     f.rms = std::sqrt(square / area);
+    f.resolved_rms = resolved_area > 0 ? std::sqrt(resolved_square / resolved_area) : 0;
     f.vertex_rms = std::sqrt(f.vertex_rms / samples.vertices);
     f.bias = sum / area;
     std::sort(weighted.begin(), weighted.end());
@@ -361,8 +378,9 @@ int main(int argc, char **argv)
         return 1;
     }
     const auto [min_angle, max_angle] = angle_range(mesh);
+    const std::vector<char> unresolved = surface_resolution::unresolved_triangles(mesh);
     const surface_resolution::AnglesWhereResolved resolved =
-        surface_resolution::angles_where_resolved(mesh, small_angle);
+        surface_resolution::angles_where_resolved(mesh, unresolved, small_angle);
     char angle_text[300], angle_json[200];
     std::snprintf(angle_text, sizeof angle_text,
                   "angles %.2f to %.2f degrees, from %.2f where the surface is resolved (%d triangles below %g "
@@ -384,7 +402,7 @@ int main(int argc, char **argv)
         mesh_free(&mesh);
         return 0;
     }
-    const Samples samples = sample_mesh(mesh);
+    const Samples samples = sample_mesh(mesh, unresolved);
     const int32_t nverts = mesh.nverts;
 
     const int steps = std::max(1, static_cast<int>(std::ceil(info.time / info.period * steps_per_period)));
@@ -397,10 +415,11 @@ int main(int argc, char **argv)
     const Figures f = figures_of(samples, errors);
     const double *worst = samples.xyz.data() + 3 * f.worst;
     std::printf("%s: %s, T = %g, t = %g, %d vertices, %zu samples, %d RK4 steps back: d max %.2e, RMS %.2e, "
-                "99th percentile %.2e, vertices' max %.2e and RMS %.2e, bias %+.2e; worst at (%.4f, %.4f, %.4f)%s; %s\n",
+                "99th percentile %.2e, vertices' max %.2e and RMS %.2e, bias %+.2e; worst at (%.4f, %.4f, %.4f)%s; where the surface is resolved d max %.2e, RMS %.2e; %s\n",
                 path, info.flow.c_str(), info.period, info.time, nverts, samples.weight.size(), steps, f.max, f.rms,
                 f.p99, f.vertex_max, f.vertex_rms, f.bias, worst[0], worst[1], worst[2],
-                f.worst < static_cast<size_t>(samples.vertices) ? ", a vertex" : "", angle_text);
+                f.worst < static_cast<size_t>(samples.vertices) ? ", a vertex" : "", f.resolved_max, f.resolved_rms,
+                angle_text);
     if (worst_count > 0)
         print_worst(samples, errors, worst_count);
     double step_change = 0;
@@ -418,8 +437,8 @@ int main(int argc, char **argv)
     if (json)
         std::printf("{\"bench\":\"fidelity\",\"flow\":\"%s\",\"period\":%g,\"time\":%g,\"vertices\":%d,"
                     "\"samples\":%zu,\"rk4_steps\":%d,\"max\":%.3e,\"rms\":%.3e,\"p99\":%.3e,\"vertex_max\":%.3e,"
-                    "\"vertex_rms\":%.3e,\"bias\":%.3e,%s%s}\n",
+                    "\"vertex_rms\":%.3e,\"bias\":%.3e,\"resolved_max\":%.3e,\"resolved_rms\":%.3e,%s%s}\n",
                     info.flow.c_str(), info.period, info.time, nverts, samples.weight.size(), steps, f.max, f.rms,
-                    f.p99, f.vertex_max, f.vertex_rms, f.bias, angle_json, step_figure);
+                    f.p99, f.vertex_max, f.vertex_rms, f.bias, f.resolved_max, f.resolved_rms, angle_json, step_figure);
     return 0;
 }

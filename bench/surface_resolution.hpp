@@ -112,9 +112,10 @@ struct AnglesWhereResolved {
     double unresolved_area = 0;   // the marked triangles' share of the area
 };
 
-inline AnglesWhereResolved angles_where_resolved(const sfa_mesh_data &mesh, double threshold)
+// `unresolved`: unresolved_triangles(mesh).
+inline AnglesWhereResolved angles_where_resolved(const sfa_mesh_data &mesh, const std::vector<char> &unresolved,
+                                                 double threshold)
 {
-    const std::vector<char> unresolved = unresolved_triangles(mesh);
     AnglesWhereResolved result;
     double area = 0, unresolved_area = 0;
     for (int32_t t = 0; t < mesh.ntris; ++t) {

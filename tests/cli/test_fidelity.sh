@@ -70,6 +70,17 @@ sphere_resolved() {
     [ "$(figure "$work/sphere_angles.txt" min_angle_resolved)" = "$(figure "$work/sphere_angles.txt" min_angle)" ]
 }
 check "on the start sphere the surface is resolved everywhere: no triangle left out of the smallest angle" sphere_resolved
+sphere_error_resolved() {
+  [ "$(figure "$work/start.txt" resolved_max)" = "$(figure "$work/start.txt" max)" ] &&
+    [ "$(figure "$work/start.txt" resolved_rms)" = "$(figure "$work/start.txt" rms)" ]
+}
+check "and no sample is left out of its error" sphere_error_resolved
+# A mesh never remeshed has needles all over its stretched sheet: most of it is unresolved.
+advected_left_out() {
+  below 0.5 "$(figure "$work/advected.txt" unresolved_area)" &&
+    below "$(figure "$work/advected.txt" resolved_max)" "$(figure "$work/advected.txt" max)"
+}
+check "the mesh never remeshed leaves more than half its area unresolved, and its worst error there" advected_left_out
 # A hairpin: a strip folded back onto itself, its two layers 0.005 apart and joined at the
 # fold by needles (3 degrees) across the gap; the layers are right triangles of edge
 # 0.125. The needles bend round something smaller than themselves, the layers do not.
