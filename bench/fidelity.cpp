@@ -14,8 +14,9 @@
 // (|p0 - c| - r) / r, which shows a bias such as a global offset of the surface; and the
 // mesh's smallest and largest angle; and where the mesh resolves the surface
 // (bench/surface_resolution.hpp), the largest and RMS d and the smallest angle, with the
-// share of the area left out for that and how many triangles below 5 degrees lie there. --angles-only gives the angles alone, without
-// the backtrace (which takes minutes on the largest meshes).
+// share of the area left out for that and how many triangles below 5 degrees lie there.
+// --angles-only gives the angles alone, without the backtrace (which takes minutes on the
+// largest meshes).
 //
 // The mesh is a flow run's checkpoint (surfadapt enright|vortex --checkpoints DIR), whose
 // first line names the flow, its period, the time and the start sphere. The RK4 step is

@@ -121,7 +121,8 @@ inline AnglesWhereResolved angles_where_resolved(const sfa_mesh_data &mesh, cons
     for (int32_t t = 0; t < mesh.ntris; ++t) {
         const std::array<double, 3> angles = triangle_angles(mesh, t);
         const double smallest = *std::min_element(angles.begin(), angles.end());
-        const double size = (corner(mesh, t, 1) - corner(mesh, t, 0)).cross(corner(mesh, t, 2) - corner(mesh, t, 0)).norm();
+        const Vec3 a = corner(mesh, t, 0);
+        const double size = (corner(mesh, t, 1) - a).cross(corner(mesh, t, 2) - a).norm();
         area += size;
         if (unresolved[t])
             unresolved_area += size;
