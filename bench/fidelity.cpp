@@ -416,7 +416,8 @@ int main(int argc, char **argv)
     const Figures f = figures_of(samples, errors);
     const double *worst = samples.xyz.data() + 3 * f.worst;
     std::printf("%s: %s, T = %g, t = %g, %d vertices, %zu samples, %d RK4 steps back: d max %.2e, RMS %.2e, "
-                "99th percentile %.2e, vertices' max %.2e and RMS %.2e, bias %+.2e; worst at (%.4f, %.4f, %.4f)%s; where the surface is resolved d max %.2e, RMS %.2e; %s\n",
+                "99th percentile %.2e, vertices' max %.2e and RMS %.2e, bias %+.2e; worst at (%.4f, %.4f, %.4f)%s; "
+                "where the surface is resolved d max %.2e, RMS %.2e; %s\n",
                 path, info.flow.c_str(), info.period, info.time, nverts, samples.weight.size(), steps, f.max, f.rms,
                 f.p99, f.vertex_max, f.vertex_rms, f.bias, worst[0], worst[1], worst[2],
                 f.worst < static_cast<size_t>(samples.vertices) ? ", a vertex" : "", f.resolved_max, f.resolved_rms,

@@ -69,8 +69,10 @@ inline std::vector<char> unresolved_triangles(const sfa_mesh_data &mesh)
             across[sides[i + 1].second] = sides[i].second / 3;
         }
     std::vector<Vec3> normal(n);
-    for (int32_t t = 0; t < n; ++t)
-        normal[t] = (corner(mesh, t, 1) - corner(mesh, t, 0)).cross(corner(mesh, t, 2) - corner(mesh, t, 0)).normalized();
+    for (int32_t t = 0; t < n; ++t) {
+        const Vec3 a = corner(mesh, t, 0);
+        normal[t] = (corner(mesh, t, 1) - a).cross(corner(mesh, t, 2) - a).normalized();
+    }
 
     // The walk from each triangle visits at most max_visits (a ball holds a few dozen on a
     // mesh of any quality; a fan of hundreds of slivers stops there), each compared with

@@ -69,7 +69,7 @@ sphere_resolved() {
   [ "$(figure "$work/sphere_angles.txt" unresolved_area)" = "0.00e+00" ] &&
     [ "$(figure "$work/sphere_angles.txt" min_angle_resolved)" = "$(figure "$work/sphere_angles.txt" min_angle)" ]
 }
-check "on the start sphere the surface is resolved everywhere: no triangle left out of the smallest angle" sphere_resolved
+check "on the start sphere the surface is resolved everywhere: no triangle left out of its angles" sphere_resolved
 sphere_error_resolved() {
   [ "$(figure "$work/start.txt" resolved_max)" = "$(figure "$work/start.txt" max)" ] &&
     [ "$(figure "$work/start.txt" resolved_rms)" = "$(figure "$work/start.txt" rms)" ]
@@ -107,7 +107,7 @@ hairpin_judged() {
     below 0 "$(figure "$work/hairpin_angles.txt" unresolved_area)" &&
     below "$(figure "$work/hairpin_angles.txt" unresolved_area)" 0.5
 }
-check "on a hairpin the needles across its fold are left out as unresolved, the layers' right triangles kept" hairpin_judged
+check "on a hairpin the needles across its fold are left out, the layers' right triangles kept" hairpin_judged
 
 check "a mesh that is not a checkpoint is refused with the reason" \
   sh -c "printf 'v 0 0 0\n' >'$work/plain.obj'; '$fidelity' '$work/plain.obj' 2>&1 | grep -q 'not a surfadapt checkpoint'"
