@@ -13,7 +13,7 @@
 #pragma once
 
 #include "geometry/distance.hpp"
-#include "surfadapt.h"
+#include "obj_io.h" // sfa_mesh_data
 
 #include <algorithm>
 #include <array>
