@@ -283,7 +283,18 @@ enum sfa_param {
     /** The merge distance of ::SFA_PARAM_TOPOLOGY_CHANGE, as a ratio of the local desired
         edge length l: sheets nearer than it merge, necks thinner than it are cut.
         A ratio to l, in (0, 10]; default 0.5. */
-    SFA_PARAM_MERGE_DISTANCE = 26
+    SFA_PARAM_MERGE_DISTANCE = 26,
+    /** The desired edge length where a sheet is thinner than an edge, as a ratio of the
+        local l: each sfa_adapt() asks for this ratio times l (or times the host's size
+        field, sfa_set_size_field()) at the vertices near a facing sheet, where the two
+        sides of a sheet or of a narrow gap come nearer than their edges (those the
+        crossing guard watches, ::SFA_PARAM_CROSSING_GUARD, whether or not it is on), graded
+        like a size field (::SFA_PARAM_SIZE_GRADATION). So the mesh follows a sheet as it
+        thins instead of letting a triangle span it, where it would have to bend round
+        something smaller than itself (the vortex flow with T = 6 makes such sheets for
+        most of its period; see the README). The host's own size field is not changed. 1
+        asks for nothing finer. A ratio to l, in (0, 1]; default 1. */
+    SFA_PARAM_THIN_SHEET_EDGE_RATIO = 27
 };
 
 /** Quantities for sfa_measure(). */

@@ -133,6 +133,11 @@ double fraction_option(int argc, char **argv, int &i)
     return number_option(argc, argv, i, [](double v) { return v >= 0 && v <= 1; }, "a number from 0 to 1");
 }
 
+double positive_fraction_option(int argc, char **argv, int &i)
+{
+    return number_option(argc, argv, i, [](double v) { return v > 0 && v <= 1; }, "a number above 0, at most 1");
+}
+
 namespace {
 
 double angle_at(const double *a, const double *b, const double *c)

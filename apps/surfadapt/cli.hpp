@@ -35,6 +35,7 @@ bool read_drop_option(int argc, char **argv, int first, const char *command, boo
 int int_option(int argc, char **argv, int &i, int lo, int hi);
 double positive_option(int argc, char **argv, int &i);
 double fraction_option(int argc, char **argv, int &i); // in [0, 1]
+double positive_fraction_option(int argc, char **argv, int &i); // in (0, 1]
 
 // What a user wants to know of a mesh's quality.
 struct Quality {

@@ -40,6 +40,8 @@ bool read_flow_options(int argc, char **argv, int first, FlowRun &run, const cha
             run.volume_correction = false;
         else if (!std::strcmp(argv[i], "--denoise"))
             run.denoise = fraction_option(argc, argv, i);
+        else if (!std::strcmp(argv[i], "--thin-sheet-ratio"))
+            run.thin_sheet_edge_ratio = positive_fraction_option(argc, argv, i);
         else if (!std::strcmp(argv[i], "--json"))
             run.json = true;
         else if (!std::strcmp(argv[i], "--out") && i + 1 < argc)

@@ -79,6 +79,7 @@ int run_flow(const FlowRun &run, FlowResult &result)
     if (run.isotropic)
         sfa_set_param(s, SFA_PARAM_ANISOTROPIC, 0);
     sfa_set_param(s, SFA_PARAM_DENOISE, run.denoise);
+    sfa_set_param(s, SFA_PARAM_THIN_SHEET_EDGE_RATIO, run.thin_sheet_edge_ratio);
     sfa_set_param(s, SFA_PARAM_CROSSING_GUARD, run.crossing_guard ? 1 : 0);
     sfa_set_param(s, SFA_PARAM_COLLISION_SAFE_MOTION, run.collision_safe ? 1 : 0);
     sfa_set_param(s, SFA_PARAM_TOPOLOGY_CHANGE, run.topology_change ? 1 : 0);
@@ -87,13 +88,17 @@ int run_flow(const FlowRun &run, FlowResult &result)
     sfa_set_param(s, SFA_PARAM_ADAPT_PASSES, 1);
 
     const double volume0 = measure(s, SFA_MEASURE_VOLUME), area0 = measure(s, SFA_MEASURE_AREA);
+    char thin_sheets[80] = "";
+    if (run.thin_sheet_edge_ratio < 1)
+        std::snprintf(thin_sheets, sizeof thin_sheets, ", edges of %g l where a sheet is thinner than an edge",
+                      run.thin_sheet_edge_ratio);
     std::printf("%s: sphere of radius %g at (%g, %g, %g), %d vertices; T = %g, dt = %g, %d steps; %s adaptation "
                 "every %d steps, denoising %g, crossing guard %s, collision-safe motion %s, topology change %s, "
-                "volume correction %s\n\n",
+                "volume correction %s%s\n\n",
                 run.title, run.radius, run.centre[0], run.centre[1], run.centre[2], nverts, run.period, run.dt,
                 run.steps, run.isotropic ? "isotropic" : "anisotropic", run.adapt_every, run.denoise,
                 run.crossing_guard ? "on" : "off", run.collision_safe ? "on" : "off",
-                run.topology_change ? "on" : "off", run.volume_correction ? "on" : "off");
+                run.topology_change ? "on" : "off", run.volume_correction ? "on" : "off", thin_sheets);
     if (first_step > 0)
         std::printf("resumed from %s at t = %g (step %d); volume errors are relative to its volume\n\n",
                     run.resume_from.c_str(), t_start, first_step);

@@ -28,6 +28,7 @@ struct FlowRun {
     int report_every;     // table rows (and saved steps)
     bool json = false;    // also print the summary as one JSON line (for benchmarks)
     double denoise = 0;   // SFA_PARAM_DENOISE
+    double thin_sheet_edge_ratio = 1; // SFA_PARAM_THIN_SHEET_EDGE_RATIO
     bool crossing_guard = true; // SFA_PARAM_CROSSING_GUARD
     bool collision_safe = false; // SFA_PARAM_COLLISION_SAFE_MOTION
     bool topology_change = false; // SFA_PARAM_TOPOLOGY_CHANGE

@@ -65,6 +65,7 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_PARAM_COLLISION_SAFE_MOTION = 24
   integer(c_int), parameter, public :: SFA_PARAM_TOPOLOGY_CHANGE = 25
   integer(c_int), parameter, public :: SFA_PARAM_MERGE_DISTANCE = 26
+  integer(c_int), parameter, public :: SFA_PARAM_THIN_SHEET_EDGE_RATIO = 27
 
   ! --------------------------------------------------- enum sfa_measure_quantity
   integer(c_int), parameter, public :: SFA_MEASURE_VOLUME = 0

@@ -90,6 +90,7 @@ class Param(enum.IntEnum):
     COLLISION_SAFE_MOTION = 24
     TOPOLOGY_CHANGE = 25
     MERGE_DISTANCE = 26
+    THIN_SHEET_EDGE_RATIO = 27
 
 
 class Measure(enum.IntEnum):

@@ -8,6 +8,7 @@
 #include "adapt/size_field.hpp"
 #include "adapt/smooth.hpp"
 #include "adapt/split.hpp"
+#include "adapt/thin_sheet_sizes.hpp"
 #include "adapt/topology_change.hpp"
 #include "adapt/volume.hpp"
 #include "fields/carried_fields.hpp"
@@ -26,9 +27,10 @@ class Adaptation {
 public:
     // `size`: the graded desired length of every vertex, the last of data.fields (or null).
     // `origin_hints`: per vertex, a triangle of the mesh as the call found it.
+    // `near_sheet`: near_facing_sheet(mesh) if the crossing guard is on.
     Adaptation(TriMesh &mesh, SurfaceData &data, const std::vector<double> *size, const AdaptSettings &settings,
                SurfaceAnalysis &workspace, const Components &components, std::vector<int32_t> origin_hints,
-               PhaseTimes &seconds)
+               std::vector<char> near_sheet, PhaseTimes &seconds)
         : mesh_(mesh), settings_(settings), seconds_(seconds), geometry_(workspace), edit_(mesh),
           carried_fields_(data.fields), face_fields_(edit_, data.face_fields), origins_(std::move(origin_hints)),
           size_(size),
@@ -45,7 +47,7 @@ public:
         edit_.attach(component_of_);
         // Where the surface is thinner than an edge, no step may carry it through itself.
         if (settings.crossing_guard) {
-            guard_ = timed(seconds_.analysis, [&] { return CrossingGuard(near_facing_sheet(mesh)); });
+            guard_ = CrossingGuard(std::move(near_sheet));
             guard_.watch_features(features_.ranks());
             edit_.attach(guard_listener_);
         }
@@ -181,9 +183,15 @@ AdaptCounts adapt_surface(TriMesh &mesh, SurfaceData &data, const AdaptSettings 
         counts.topology = change_topology(mesh, data, components, settings.merge_distance,
                                           settings.repair.desired_length, origin_hints);
     }
+    // The vertices near a facing sheet, for the crossing guard and the finer sizes there.
+    std::vector<char> near_facing;
+    if (settings.crossing_guard || settings.thin_sheet_edge_ratio < 1)
+        near_facing = timed(counts.seconds.analysis, [&] { return near_facing_sheet(mesh); });
+    const ThinSheetSizes thin_sheets(mesh, data, near_facing, settings.thin_sheet_edge_ratio,
+                                     settings.repair.desired_length);
     const SizeAsField size(mesh, data, settings.size_gradation);
     Adaptation adaptation(mesh, data, size.values(), settings, workspace, components, std::move(origin_hints),
-                          counts.seconds);
+                          settings.crossing_guard ? std::move(near_facing) : std::vector<char>(), counts.seconds);
     while (counts.passes < settings.max_passes) {
         // Settled: after the first pass or two, the changes of a pass dwindle to a few edges
         // in a thousand (on a dynamic surface, the second pass of a call changes about 0.5 %

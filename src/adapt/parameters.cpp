@@ -42,6 +42,7 @@ const ParamSpec specs[] = {
     {"SFA_PARAM_COLLISION_SAFE_MOTION", "a flag", 0, RangeKind::flag, 0, 1},
     {"SFA_PARAM_TOPOLOGY_CHANGE", "a flag", 0, RangeKind::flag, 0, 1},
     {"SFA_PARAM_MERGE_DISTANCE", "a ratio to l", 0.5, RangeKind::left_open, 0, 10},
+    {"SFA_PARAM_THIN_SHEET_EDGE_RATIO", "a ratio to l", 1, RangeKind::left_open, 0, 1},
 };
 static_assert(sizeof specs / sizeof specs[0] == static_cast<size_t>(Param::count), "one spec per key");
 

@@ -36,6 +36,7 @@ enum class Param : int {
     collision_safe_motion,
     topology_change,
     merge_distance,
+    thin_sheet_edge_ratio,
     count
 };
 

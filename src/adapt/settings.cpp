@@ -71,7 +71,8 @@ AdaptSettings adapt_settings(const Parameters &p, double default_edge_length)
             p.get(Param::volume_correction) != 0,
             p.get(Param::size_gradation),
             p.get(Param::topology_change) != 0,
-            p.get(Param::merge_distance)};
+            p.get(Param::merge_distance),
+            p.get(Param::thin_sheet_edge_ratio)};
 }
 
 } // namespace sfa

@@ -50,6 +50,7 @@ struct AdaptSettings {
     double size_gradation;  // of a host's size field (size_field.hpp)
     bool topology_change;   // merges and pinches first (topology_change.hpp)
     double merge_distance;  // their distance, a ratio of l
+    double thin_sheet_edge_ratio; // the desired length where a sheet is thinner than an edge, a ratio of l
 };
 
 FeatureThresholds feature_thresholds(const Parameters &parameters);

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* What a coupled solver controls: a size field (the edge length follows the host's local
- * grid spacing), fixed vertices and required edges (kept bit for bit), and the checked
+ * grid spacing; finer where a sheet is thinner than an edge, if asked), fixed vertices and required edges (kept bit for bit), and the checked
  * variants of the functions that read one value per vertex (a stale array is refused). */
 #include "support/testing.h"
 
@@ -96,6 +96,95 @@ static void edge_lengths_follow_the_size_field(void **state)
     mesh_free(&m);
     sfa_destroy(s);
     mesh_free(&sphere);
+}
+
+/* Mean length of the edges whose both ends lie at x > cut (upper) or x < cut. */
+static double mean_edge_length_along_x(const sfa_mesh_data *m, double cut, int upper)
+{
+    int32_t count = 0, n = 0;
+    int32_t *edges = mesh_edges(m, &count);
+    double sum = 0;
+    for (int32_t e = 0; e < count; ++e) {
+        const double *a = m->xyz + 3 * edges[2 * e], *b = m->xyz + 3 * edges[2 * e + 1];
+        if (upper ? !(a[0] > cut && b[0] > cut) : !(a[0] < cut && b[0] < cut))
+            continue;
+        sum += sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+        ++n;
+    }
+    free(edges);
+    return n ? sum / n : NAN;
+}
+
+/* A bubble (a unit sphere) and, 3 to the right, a film: the same sphere pressed to a lens
+ * 0.04 thick, its two sides nearer than an edge all over. The host asks for 0.1
+ * everywhere by its size field. */
+static sfa_surface *bubble_and_film(void)
+{
+    sfa_mesh_data bubble = shape_icosphere(3, 1.0), film = shape_icosphere(3, 1.0);
+    for (int32_t v = 0; v < film.nverts; ++v) {
+        film.xyz[3 * v] += 3;
+        film.xyz[3 * v + 2] *= 0.02;
+    }
+    mesh_append(&bubble, &film);
+    sfa_surface *s = make_surface(&bubble, 0);
+    double *size = malloc(sizeof(double) * (size_t)bubble.nverts);
+    for (int32_t v = 0; v < bubble.nverts; ++v)
+        size[v] = 0.1;
+    assert_ok(s, sfa_set_size_field_checked(s, bubble.nverts, size));
+    free(size);
+    mesh_free(&film);
+    mesh_free(&bubble);
+    return s;
+}
+
+static void thin_sheets_get_finer_edges_and_the_size_field_stays(void **state)
+{
+    (void)state;
+    sfa_surface *plain = bubble_and_film(), *s = bubble_and_film();
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_THIN_SHEET_EDGE_RATIO, 0.5));
+    for (int call = 0; call < 4; ++call) {
+        assert_ok(plain, sfa_adapt(plain));
+        assert_ok(s, sfa_adapt(s));
+    }
+    sfa_mesh_data a = read_back(plain), b = read_back(s);
+    const double bubble_plain = mean_edge_length_along_x(&a, 1.5, 0), film_plain = mean_edge_length_along_x(&a, 1.5, 1);
+    const double bubble = mean_edge_length_along_x(&b, 1.5, 0), film = mean_edge_length_along_x(&b, 1.5, 1);
+    print_message("thin sheets at 0.5 l: bubble %.4f (without %.4f), film %.4f (without %.4f)\n", bubble, bubble_plain,
+                  film, film_plain);
+    /* The film's edges about halve (once: the sizes asked are the host's times the ratio
+     * at every call, not the last call's); the bubble, thick everywhere, is meshed as
+     * without. */
+    assert_true(film > 0.35 * film_plain && film < 0.65 * film_plain);
+    assert_true(fabs(bubble - bubble_plain) < 0.02 * bubble_plain);
+    mesh_free(&a);
+    mesh_free(&b);
+
+    /* The film blown up into a sphere again (its heights stretched 25 times): nothing is
+     * thin any more, and its edges keep to the host's 0.1, which the finer sizes asked for
+     * while it was thin did not replace. (Had they replaced it, each call would have
+     * halved the sizes again: 0.007 after these calls.) */
+    for (double done = 0; done < 1;) {
+        b = read_back(s);
+        double *velocity = calloc(3 * (size_t)b.nverts, sizeof(double));
+        for (int32_t v = 0; v < b.nverts; ++v)
+            if (b.xyz[3 * v] > 1.5)
+                velocity[3 * v + 2] = 24 * b.xyz[3 * v + 2] / (1 + 24 * done);
+        assert_ok(s, sfa_set_velocities_checked(s, b.nverts, velocity));
+        double taken = 0;
+        assert_ok(s, sfa_move(s, 1 - done, &taken));
+        done += taken;
+        free(velocity);
+        mesh_free(&b);
+    }
+    for (int call = 0; call < 4; ++call)
+        assert_ok(s, sfa_adapt(s));
+    b = read_back(s);
+    const double blown_up = mean_edge_length_along_x(&b, 1.5, 1);
+    print_message("blown up into a sphere: film %.4f\n", blown_up);
+    assert_true(blown_up > 0.7 * film_plain && blown_up < 1.3 * film_plain);
+    mesh_free(&b);
+    sfa_destroy(plain);
+    sfa_destroy(s);
 }
 
 static void bad_sizes_are_refused_by_vertex(void **state)
@@ -288,6 +377,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(edge_lengths_follow_the_size_field),
+        cmocka_unit_test(thin_sheets_get_finer_edges_and_the_size_field_stays),
         cmocka_unit_test(bad_sizes_are_refused_by_vertex),
         cmocka_unit_test(fixed_vertices_and_required_edges_are_kept_bit_for_bit),
         cmocka_unit_test(bad_constraints_are_refused_by_name),

@@ -32,6 +32,7 @@ static double expected_default(int key)
     case SFA_PARAM_COLLISION_SAFE_MOTION: return 0;
     case SFA_PARAM_TOPOLOGY_CHANGE: return 0;
     case SFA_PARAM_MERGE_DISTANCE: return 0.5;
+    case SFA_PARAM_THIN_SHEET_EDGE_RATIO: return 1;
     case SFA_PARAM_VOLUME_CORRECTION: return 1;
     case SFA_PARAM_SIZE_GRADATION: return 1.5;
     case SFA_PARAM_SHORT_EDGE_RATIO: return 0.6;
@@ -67,6 +68,7 @@ static double valid_value(int key)
     case SFA_PARAM_COLLISION_SAFE_MOTION: return 1;
     case SFA_PARAM_TOPOLOGY_CHANGE: return 1;
     case SFA_PARAM_MERGE_DISTANCE: return 10;
+    case SFA_PARAM_THIN_SHEET_EDGE_RATIO: return 1;
     case SFA_PARAM_VOLUME_CORRECTION: return 0;
     case SFA_PARAM_SIZE_GRADATION: return 3;
     case SFA_PARAM_SHORT_EDGE_RATIO: return 0;
@@ -102,6 +104,7 @@ static int invalid_values(int key, double out[4])
     case SFA_PARAM_COLLISION_SAFE_MOTION: out[0] = 0.5; out[1] = 2; out[2] = -1; return 3;
     case SFA_PARAM_TOPOLOGY_CHANGE: out[0] = 0.5; out[1] = 2; out[2] = -1; return 3;
     case SFA_PARAM_MERGE_DISTANCE: out[0] = 0; out[1] = 10.000001; out[2] = -0.5; return 3;
+    case SFA_PARAM_THIN_SHEET_EDGE_RATIO: out[0] = 0; out[1] = 1.000001; out[2] = -0.5; return 3;
     case SFA_PARAM_VOLUME_CORRECTION: out[0] = 0.5; out[1] = 2; out[2] = -1; return 3;
     case SFA_PARAM_SIZE_GRADATION: out[0] = 1; out[1] = 0.5; out[2] = -2; return 3;
     case SFA_PARAM_SHORT_EDGE_RATIO: out[0] = 1; out[1] = -0.1; out[2] = 1.5; return 3;
@@ -125,6 +128,7 @@ static documented_range range_of(int key)
     case SFA_PARAM_COLLISION_SAFE_MOTION: return (documented_range){0, 1, 1, 1};
     case SFA_PARAM_TOPOLOGY_CHANGE: return (documented_range){0, 1, 1, 1};
     case SFA_PARAM_MERGE_DISTANCE: return (documented_range){0, 10, 0, 1};
+    case SFA_PARAM_THIN_SHEET_EDGE_RATIO: return (documented_range){0, 1, 0, 1};
     case SFA_PARAM_VOLUME_CORRECTION: return (documented_range){0, 1, 1, 1};
     case SFA_PARAM_SIZE_GRADATION: return (documented_range){1, INFINITY, 0, 0};
     case SFA_PARAM_SHORT_EDGE_RATIO: return (documented_range){0, 1, 1, 0};

@@ -16,7 +16,7 @@
 
 /* Number of parameter keys of the API (SFA_PARAM_EDGE_LENGTH .. SFA_PARAM_COLLISION_SAFE_MOTION);
  * unit_constant_lists fails when enum sfa_param has more or fewer. */
-#define SHAPES_NPARAMS 27
+#define SHAPES_NPARAMS 28
 
 /* [0,1]^3: 8 vertices, 12 triangles, each face split along one diagonal. */
 sfa_mesh_data shape_unit_cube(void);
