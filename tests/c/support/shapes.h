@@ -14,7 +14,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Number of parameter keys of the API (SFA_PARAM_EDGE_LENGTH .. SFA_PARAM_COLLISION_SAFE_MOTION);
+/* Number of parameter keys of the API (SFA_PARAM_EDGE_LENGTH .. SFA_PARAM_THIN_SHEET_EDGE_RATIO);
  * unit_constant_lists fails when enum sfa_param has more or fewer. */
 #define SHAPES_NPARAMS 28
 
