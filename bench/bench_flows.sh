@@ -11,7 +11,8 @@
 # collision-safe too), to show what those cost against the run above them; and those costs
 # again as ratios measured in alternating rounds (cost_ratio, last). Each flow runs also
 # isotropically (once for Enright and T = 6), for the shape errors of the two modes at
-# about equal vertex counts; the collision and topology searches are timed alone on the
+# about equal vertex counts, and T = 6 with finer edges where its sheets are thinner than
+# an edge; the collision and topology searches are timed alone on the
 # Enright run's meshes. The shape error of
 # each experiment comes from its checkpoints (bench/fidelity.cpp says how it is measured).
 # Last, Enright and vortex T = 6 run again from spheres of five sizes, for how much the
@@ -72,6 +73,7 @@ flow vortex_t2_topology_change "$runs" vortex --period 2 --topology-change
 flow vortex_t2_isotropic "$runs" vortex --period 2 --isotropic
 flow vortex_t6 1 vortex --period 6
 flow vortex_t6_topology_change 1 vortex --period 6 --topology-change
+flow vortex_t6_thin_sheets 1 vortex --period 6 --thin-sheet-ratio 0.5 # SFA_PARAM_THIN_SHEET_EDGE_RATIO
 flow vortex_t6_isotropic 1 vortex --period 6 --isotropic
 
 # ratios NAME ARGS...: what collision-safe motion and topology change cost, as ratios to
