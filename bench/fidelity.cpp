@@ -98,18 +98,6 @@ Samples sample_mesh(const sfa_mesh_data &mesh, const std::vector<char> &unresolv
     return samples;
 }
 
-// The smallest and largest angle of any triangle, in degrees.
-std::pair<double, double> angle_range(const sfa_mesh_data &mesh)
-{
-    double smallest = 180, largest = 0;
-    for (int32_t t = 0; t < mesh.ntris; ++t)
-        for (double angle : surface_resolution::triangle_angles(mesh, t)) {
-            smallest = std::min(smallest, angle);
-            largest = std::max(largest, angle);
-        }
-    return {smallest, largest};
-}
-
 // Carries every point from time t back to 0 by RK4 with `steps` equal steps.
 void backtrace(sfa_velocity_fn velocity, double period, double t, int steps, std::vector<double> &xyz)
 {
@@ -239,24 +227,17 @@ std::vector<double> largest_normal_turns(const sfa_mesh_data &mesh)
         for (double &x : n)
             x /= length > 0 ? length : 1;
     }
-    std::vector<std::pair<uint64_t, int32_t>> sides; // (edge key, triangle)
-    for (int32_t t = 0; t < mesh.ntris; ++t)
-        for (int k = 0; k < 3; ++k) {
-            const uint64_t i = static_cast<uint32_t>(mesh.tris[3 * t + k]),
-                           j = static_cast<uint32_t>(mesh.tris[3 * t + (k + 1) % 3]);
-            sides.emplace_back(std::min(i, j) << 32 | std::max(i, j), t);
-        }
-    std::sort(sides.begin(), sides.end());
+    const std::vector<int32_t> across = surface_resolution::neighbours_across_edges(mesh);
     std::vector<double> turn(mesh.ntris, 0.0);
-    for (size_t e = 0; e + 1 < sides.size(); ++e)
-        if (sides[e].first == sides[e + 1].first) {
-            const int32_t t = sides[e].second, u = sides[e + 1].second;
-            const auto &n = normals[t], &m = normals[u];
-            const double cosine = std::max(-1.0, std::min(1.0, n[0] * m[0] + n[1] * m[1] + n[2] * m[2]));
-            const double angle = std::acos(cosine) * 180 / 3.14159265358979323846;
-            turn[t] = std::max(turn[t], angle);
-            turn[u] = std::max(turn[u], angle);
-        }
+    for (int32_t t = 0; t < mesh.ntris; ++t)
+        for (int k = 0; k < 3; ++k)
+            if (const int32_t u = across[3 * static_cast<size_t>(t) + k]; u > t) {
+                const auto &n = normals[t], &m = normals[u];
+                const double cosine = std::max(-1.0, std::min(1.0, n[0] * m[0] + n[1] * m[1] + n[2] * m[2]));
+                const double angle = std::acos(cosine) * 180 / 3.14159265358979323846;
+                turn[t] = std::max(turn[t], angle);
+                turn[u] = std::max(turn[u], angle);
+            }
     return turn;
 }
 
@@ -378,7 +359,6 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "fidelity: %s\n", message);
         return 1;
     }
-    const auto [min_angle, max_angle] = angle_range(mesh);
     const std::vector<char> unresolved = surface_resolution::unresolved_triangles(mesh);
     const surface_resolution::AnglesWhereResolved resolved =
         surface_resolution::angles_where_resolved(mesh, unresolved, small_angle);
@@ -387,12 +367,14 @@ int main(int argc, char **argv)
                   "angles %.2f to %.2f degrees, from %.2f where the surface is resolved (%d triangles below %g "
                   "degrees, %d of them where it turns by more than a right angle within their size, which is %.2f %% "
                   "of the area)",
-                  min_angle, max_angle, resolved.smallest, resolved.below, small_angle, resolved.below_unresolved,
+                  resolved.smallest_anywhere, resolved.largest_anywhere, resolved.smallest, resolved.below, small_angle,
+                  resolved.below_unresolved,
                   100 * resolved.unresolved_area);
     std::snprintf(angle_json, sizeof angle_json,
                   "\"min_angle\":%.2f,\"max_angle\":%.2f,\"min_angle_resolved\":%.2f,\"below_5\":%d,"
                   "\"below_5_unresolved\":%d,\"unresolved_area\":%.2e",
-                  min_angle, max_angle, resolved.smallest, resolved.below, resolved.below_unresolved,
+                  resolved.smallest_anywhere, resolved.largest_anywhere, resolved.smallest, resolved.below,
+                  resolved.below_unresolved,
                   resolved.unresolved_area);
     if (angles_only) {
         std::printf("%s: %s, T = %g, t = %g, %d triangles: %s\n", path, info.flow.c_str(), info.period, info.time,

@@ -42,17 +42,11 @@ inline std::array<double, 3> triangle_angles(const sfa_mesh_data &mesh, int32_t 
     return angles;
 }
 
-// 1 for each triangle near which the surface turns by more than a right angle within its
-// own size (above), 0 for the others. The surface round triangle t is what a walk from t
-// across edges reaches through triangles that come nearer to t's centroid than t's longest
-// edge: the far side of a thin sheet, across the sheet, is not part of it (each side of a
-// flat film may be meshed well), the sheet's rim is. A triangle without area has no
-// normal and faces against nothing. The mesh is a closed or open manifold (a flow's
-// checkpoint).
-inline std::vector<char> unresolved_triangles(const sfa_mesh_data &mesh)
+// Each triangle's neighbour across each of its edges: across[3 t + k] is the triangle
+// across the edge from corner k to corner k + 1 of t, -1 on a boundary (a manifold mesh).
+inline std::vector<int32_t> neighbours_across_edges(const sfa_mesh_data &mesh)
 {
     const int32_t n = mesh.ntris;
-    // Each triangle's neighbour across each of its edges (-1 on a boundary).
     std::vector<std::pair<uint64_t, int32_t>> sides; // (edge key, 3 t + k)
     sides.reserve(3 * static_cast<size_t>(n));
     for (int32_t t = 0; t < n; ++t)
@@ -68,6 +62,20 @@ inline std::vector<char> unresolved_triangles(const sfa_mesh_data &mesh)
             across[sides[i].second] = sides[i + 1].second / 3;
             across[sides[i + 1].second] = sides[i].second / 3;
         }
+    return across;
+}
+
+// 1 for each triangle near which the surface turns by more than a right angle within its
+// own size (above), 0 for the others. The surface round triangle t is what a walk from t
+// across edges reaches through triangles that come nearer to t's centroid than t's longest
+// edge: the far side of a thin sheet, across the sheet, is not part of it (each side of a
+// flat film may be meshed well), the sheet's rim is. A triangle without area has no
+// normal and faces against nothing. The mesh is a closed or open manifold (a flow's
+// checkpoint).
+inline std::vector<char> unresolved_triangles(const sfa_mesh_data &mesh)
+{
+    const int32_t n = mesh.ntris;
+    const std::vector<int32_t> across = neighbours_across_edges(mesh);
     std::vector<Vec3> normal(n);
     for (int32_t t = 0; t < n; ++t) {
         const Vec3 a = corner(mesh, t, 0);
@@ -105,9 +113,10 @@ inline std::vector<char> unresolved_triangles(const sfa_mesh_data &mesh)
     return unresolved;
 }
 
-// The angles where the mesh resolves its surface, and how many below `threshold` degrees
-// lie where it does not.
+// The range of the mesh's angles; the angles where it resolves its surface, and how many
+// below `threshold` degrees lie where it does not.
 struct AnglesWhereResolved {
+    double smallest_anywhere = 180, largest_anywhere = 0; // of every triangle
     double smallest = 180;        // the smallest angle of any triangle not marked
     int32_t below = 0;            // triangles with an angle below the threshold
     int32_t below_unresolved = 0; // of them, those marked
@@ -123,6 +132,8 @@ inline AnglesWhereResolved angles_where_resolved(const sfa_mesh_data &mesh, cons
     for (int32_t t = 0; t < mesh.ntris; ++t) {
         const std::array<double, 3> angles = triangle_angles(mesh, t);
         const double smallest = *std::min_element(angles.begin(), angles.end());
+        result.smallest_anywhere = std::min(result.smallest_anywhere, smallest);
+        result.largest_anywhere = std::max(result.largest_anywhere, *std::max_element(angles.begin(), angles.end()));
         const Vec3 a = corner(mesh, t, 0);
         const double size = (corner(mesh, t, 1) - a).cross(corner(mesh, t, 2) - a).norm();
         area += size;
