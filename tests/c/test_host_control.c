@@ -4,16 +4,16 @@
  * variants of the functions that read one value per vertex (a stale array is refused). */
 #include "support/testing.h"
 
-/* Mean length of the edges whose both ends satisfy `side` (z > cut or z < -cut). */
-static double mean_edge_length_where(const sfa_mesh_data *m, double cut, int upper, int32_t *count_out)
+/* Mean length of the edges whose both ends have coordinate `axis` in (low, high), and
+ * their number in *count_out (if not NULL). */
+static double mean_edge_length_between(const sfa_mesh_data *m, int axis, double low, double high, int32_t *count_out)
 {
     int32_t count = 0, n = 0;
     int32_t *edges = mesh_edges(m, &count);
     double sum = 0;
     for (int32_t e = 0; e < count; ++e) {
         const double *a = m->xyz + 3 * edges[2 * e], *b = m->xyz + 3 * edges[2 * e + 1];
-        const int in = upper ? (a[2] > cut && b[2] > cut) : (a[2] < -cut && b[2] < -cut);
-        if (!in)
+        if (!(a[axis] > low && a[axis] < high && b[axis] > low && b[axis] < high))
             continue;
         sum += sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
         ++n;
@@ -49,8 +49,8 @@ static void edge_lengths_follow_the_size_field(void **state)
         assert_ok(s, sfa_adapt(s));
     sfa_mesh_data m = read_back(s);
     int32_t fine_edges = 0, coarse_edges = 0;
-    const double fine = mean_edge_length_where(&m, 0.5, 1, &fine_edges);
-    const double coarse = mean_edge_length_where(&m, 0.5, 0, &coarse_edges);
+    const double fine = mean_edge_length_between(&m, 2, 0.5, INFINITY, &fine_edges);
+    const double coarse = mean_edge_length_between(&m, 2, -INFINITY, -0.5, &coarse_edges);
     print_message("size field: mean edge %.4f over %d edges (asked 0.05), %.4f over %d (asked 0.2)\n", fine,
                   fine_edges, coarse, coarse_edges);
     assert_true(fabs(fine - 0.05) < 0.3 * 0.05);
@@ -89,30 +89,14 @@ static void edge_lengths_follow_the_size_field(void **state)
     for (int call = 0; call < 4; ++call)
         assert_ok(s, sfa_adapt(s));
     m = read_back(s);
-    const double upper = mean_edge_length_where(&m, 0.5, 1, NULL), lower = mean_edge_length_where(&m, 0.5, 0, NULL);
+    const double upper = mean_edge_length_between(&m, 2, 0.5, INFINITY, NULL),
+                 lower = mean_edge_length_between(&m, 2, -INFINITY, -0.5, NULL);
     print_message("cleared: mean edge %.4f above, %.4f below (global 0.1)\n", upper, lower);
     assert_true(fabs(upper - 0.1) < 0.3 * 0.1);
     assert_true(fabs(lower - 0.1) < 0.3 * 0.1);
     mesh_free(&m);
     sfa_destroy(s);
     mesh_free(&sphere);
-}
-
-/* Mean length of the edges whose both ends lie at x > cut (upper) or x < cut. */
-static double mean_edge_length_along_x(const sfa_mesh_data *m, double cut, int upper)
-{
-    int32_t count = 0, n = 0;
-    int32_t *edges = mesh_edges(m, &count);
-    double sum = 0;
-    for (int32_t e = 0; e < count; ++e) {
-        const double *a = m->xyz + 3 * edges[2 * e], *b = m->xyz + 3 * edges[2 * e + 1];
-        if (upper ? !(a[0] > cut && b[0] > cut) : !(a[0] < cut && b[0] < cut))
-            continue;
-        sum += sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-        ++n;
-    }
-    free(edges);
-    return n ? sum / n : NAN;
 }
 
 /* A bubble (a unit sphere) and, 3 to the right, a film: the same sphere pressed to a lens
@@ -147,8 +131,11 @@ static void thin_sheets_get_finer_edges_and_the_size_field_stays(void **state)
         assert_ok(s, sfa_adapt(s));
     }
     sfa_mesh_data a = read_back(plain), b = read_back(s);
-    const double bubble_plain = mean_edge_length_along_x(&a, 1.5, 0), film_plain = mean_edge_length_along_x(&a, 1.5, 1);
-    const double bubble = mean_edge_length_along_x(&b, 1.5, 0), film = mean_edge_length_along_x(&b, 1.5, 1);
+    /* The bubble lies at x < 1.5, the film beyond. */
+    const double bubble_plain = mean_edge_length_between(&a, 0, -INFINITY, 1.5, NULL),
+                 film_plain = mean_edge_length_between(&a, 0, 1.5, INFINITY, NULL);
+    const double bubble = mean_edge_length_between(&b, 0, -INFINITY, 1.5, NULL),
+                 film = mean_edge_length_between(&b, 0, 1.5, INFINITY, NULL);
     print_message("thin sheets at 0.5 l: bubble %.4f (without %.4f), film %.4f (without %.4f)\n", bubble, bubble_plain,
                   film, film_plain);
     /* The film's edges about halve (once: the sizes asked are the host's times the ratio
@@ -181,7 +168,7 @@ static void thin_sheets_get_finer_edges_and_the_size_field_stays(void **state)
     for (int call = 0; call < 4; ++call)
         assert_ok(s, sfa_adapt(s));
     b = read_back(s);
-    const double blown_up = mean_edge_length_along_x(&b, 1.5, 1);
+    const double blown_up = mean_edge_length_between(&b, 0, 1.5, INFINITY, NULL);
     print_message("blown up into a sphere: film %.4f\n", blown_up);
     assert_true(blown_up > 0.7 * film_plain && blown_up < 1.3 * film_plain);
     mesh_free(&b);
