@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* What a coupled solver controls: a size field (the edge length follows the host's local
- * grid spacing; finer where a sheet is thinner than an edge, if asked), fixed vertices and required edges (kept bit for bit), and the checked
- * variants of the functions that read one value per vertex (a stale array is refused). */
+ * grid spacing; finer where a sheet is thinner than an edge, if asked), fixed vertices and
+ * required edges (kept bit for bit), and the checked variants of the functions that read
+ * one value per vertex (a stale array is refused). */
 #include "support/testing.h"
 
 /* Mean length of the edges whose both ends have coordinate `axis` in (low, high), and
