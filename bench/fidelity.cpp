@@ -360,6 +360,11 @@ int main(int argc, char **argv)
         return 1;
     }
     const std::vector<char> unresolved = surface_resolution::unresolved_triangles(mesh);
+    if (unresolved.size() != static_cast<size_t>(mesh.ntris)) {
+        std::fprintf(stderr, "fidelity: %s: not a closed or open manifold mesh that sfa_set_mesh would take\n", path);
+        mesh_free(&mesh);
+        return 1;
+    }
     const surface_resolution::AnglesWhereResolved resolved =
         surface_resolution::angles_where_resolved(mesh, unresolved, small_angle);
     char angle_text[300], angle_json[200];

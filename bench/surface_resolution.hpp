@@ -1,18 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Where a mesh does not resolve its surface, for judging its angles (issue "many bubbles",
 // item 4: "keep the angles within the paper's bounds everywhere the mesh resolves the
-// sheet"). A triangle is in such a place when the surface turns by more than a right angle
-// within the triangle's own size: the surface connected to it within its longest edge of
-// its centroid holds two triangles whose normals are more than 90 degrees apart. That is
-// the rim of a sheet thinner than the triangle (its two sides face each other there), a
-// filament thinner than it, or a crease sharper than a right angle; in each the triangle
-// would have to bend round something smaller than itself, and no placement of its corners
-// gives it good angles. On a mesh that resolves its surface (a sphere of 15 edges round
-// turns by 24 degrees an edge) no triangle qualifies. Internal to the benchmarks: it uses
-// the library's closest points.
+// sheet"): the library's rule (geometry/surface_resolution.hpp) on a checkpoint's mesh,
+// with the counts the benchmarks print. Internal to the benchmarks: it uses the library's
+// internal headers.
 #pragma once
 
-#include "geometry/distance.hpp"
+#include "geometry/surface_resolution.hpp"
+#include "mesh/error.hpp"
+#include "mesh/validate.hpp"
 #include "obj_io.h" // sfa_mesh_data
 
 #include <algorithm>
@@ -66,51 +62,16 @@ inline std::vector<int32_t> neighbours_across_edges(const sfa_mesh_data &mesh)
 }
 
 // 1 for each triangle near which the surface turns by more than a right angle within its
-// own size (above), 0 for the others. The surface round triangle t is what a walk from t
-// across edges reaches through triangles that come nearer to t's centroid than t's longest
-// edge: the far side of a thin sheet, across the sheet, is not part of it (each side of a
-// flat film may be meshed well), the sheet's rim is. A triangle without area has no
-// normal and faces against nothing. The mesh is a closed or open manifold (a flow's
-// checkpoint).
+// own size, 0 for the others: the library's rule (geometry/surface_resolution.hpp, behind
+// SFA_MEASURE_UNRESOLVED_AREA), on a checkpoint's mesh in its own triangle order. Empty
+// if the mesh is not one sfa_set_mesh would take.
 inline std::vector<char> unresolved_triangles(const sfa_mesh_data &mesh)
 {
-    const int32_t n = mesh.ntris;
-    const std::vector<int32_t> across = neighbours_across_edges(mesh);
-    std::vector<Vec3> normal(n);
-    for (int32_t t = 0; t < n; ++t) {
-        const Vec3 a = corner(mesh, t, 0);
-        normal[t] = (corner(mesh, t, 1) - a).cross(corner(mesh, t, 2) - a).normalized();
+    try {
+        return sfa::unresolved_triangles(sfa::validated_mesh({mesh.nverts, mesh.xyz, mesh.ntris, mesh.tris, 0, false}));
+    } catch (const sfa::Error &) {
+        return {};
     }
-
-    // The walk from each triangle visits at most max_visits (a ball holds a few dozen on a
-    // mesh of any quality; a fan of hundreds of slivers stops there), each compared with
-    // those before it.
-    constexpr size_t max_visits = 512;
-    std::vector<char> unresolved(n, 0);
-    std::vector<int32_t> visited;
-    for (int32_t t = 0; t < n; ++t) {
-        const Vec3 a = corner(mesh, t, 0), b = corner(mesh, t, 1), c = corner(mesh, t, 2);
-        const Vec3 centroid = (a + b + c) / 3;
-        const double radius = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-        visited.assign(1, t);
-        for (size_t i = 0; i < visited.size() && visited.size() < max_visits && !unresolved[t]; ++i)
-            for (int k = 0; k < 3; ++k) {
-                const int32_t next = across[3 * static_cast<size_t>(visited[i]) + k];
-                if (next < 0 || std::find(visited.begin(), visited.end(), next) != visited.end())
-                    continue;
-                const Vec3 nearest = sfa::closest_point_on_triangle(centroid, corner(mesh, next, 0),
-                                                                    corner(mesh, next, 1), corner(mesh, next, 2));
-                if (!((nearest - centroid).norm() <= radius))
-                    continue;
-                // More than a right angle, by more than round-off: a right-angled crease
-                // (a machined part's edge) has normals exactly square to each other.
-                for (int32_t seen : visited)
-                    if (normal[seen].dot(normal[next]) < -1e-9)
-                        unresolved[t] = 1;
-                visited.push_back(next);
-            }
-    }
-    return unresolved;
 }
 
 // The range of the mesh's angles; the angles where it resolves its surface, and how many

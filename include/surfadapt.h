@@ -368,7 +368,27 @@ enum sfa_measure_quantity {
         or, with the correction off, ::SFA_MEASURE_VOLUME_CORRECTION. A host that needs the
         volumes exactly checks it after each call. 0 before the first such call; it needs
         no mesh set. Dimensionless. */
-    SFA_MEASURE_VOLUME_LEFT = 19
+    SFA_MEASURE_VOLUME_LEFT = 19,
+    /** The share of the area, in [0, 1], of the triangles near which the surface turns by
+        more than a right angle within the triangle's own size: the surface reached from
+        the triangle across edges, through triangles nearer to its centroid than its
+        longest edge, holds two triangles whose normals are more than 90 degrees apart.
+        There the mesh does not resolve the surface: the rim of a sheet or a filament
+        thinner than the triangles, a fold, or a crease sharper than a right angle (a
+        sharp edge the host means to keep counts too). The far side of a thin sheet is not
+        reached across it, so a well-meshed film counts only at its rim. 0 where every
+        turn is resolved (a sphere 15 edges round turns by 24 degrees an edge). A host
+        watches it to see where its interface has become thinner than its mesh: finer
+        edges there (::SFA_PARAM_THIN_SHEET_EDGE_RATIO, sfa_set_size_field()) or merging
+        (::SFA_PARAM_TOPOLOGY_CHANGE). Dimensionless. Costs a walk over a few dozen
+        triangles from each (0.1 s for 200k triangles on two cores). */
+    SFA_MEASURE_UNRESOLVED_AREA = 20,
+    /** Smallest interior angle of any triangle outside the places of
+        ::SFA_MEASURE_UNRESOLVED_AREA, degrees; 180 if there is none. A triangle that must
+        bend round something smaller than itself has no good angles wherever its corners
+        go; this is ::SFA_MEASURE_MIN_ANGLE of the others. Costs what
+        ::SFA_MEASURE_UNRESOLVED_AREA costs. */
+    SFA_MEASURE_MIN_ANGLE_RESOLVED = 21
 };
 
 /** One adaptive surface. Opaque; create with sfa_create(), free with sfa_destroy(). */

@@ -88,6 +88,8 @@ module surfadapt
   integer(c_int), parameter, public :: SFA_MEASURE_TOPOLOGY_VOLUME_CHANGE = 17
   integer(c_int), parameter, public :: SFA_MEASURE_DROPS_REMOVED = 18
   integer(c_int), parameter, public :: SFA_MEASURE_VOLUME_LEFT = 19
+  integer(c_int), parameter, public :: SFA_MEASURE_UNRESOLVED_AREA = 20
+  integer(c_int), parameter, public :: SFA_MEASURE_MIN_ANGLE_RESOLVED = 21
 
   public :: sfa_version_string, sfa_abi_version, sfa_version_number, sfa_status_string
   public :: sfa_create, sfa_destroy, sfa_last_error

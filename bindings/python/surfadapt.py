@@ -115,6 +115,8 @@ class Measure(enum.IntEnum):
     TOPOLOGY_VOLUME_CHANGE = 17
     DROPS_REMOVED = 18
     VOLUME_LEFT = 19
+    UNRESOLVED_AREA = 20
+    MIN_ANGLE_RESOLVED = 21
 
 
 # The header's names as well (SFA_OK, SFA_PARAM_EDGE_LENGTH, SFA_MEASURE_VOLUME, ...), so

@@ -5,6 +5,7 @@
 #include "adapt/settings.hpp"
 #include "geometry/measures.hpp"
 #include "geometry/self_intersection.hpp"
+#include "geometry/surface_resolution.hpp"
 #include "mesh/components.hpp"
 
 using namespace sfa;
@@ -31,10 +32,10 @@ SurfaceAnalysis current_analysis(const sfa_surface *s)
 
 void require_known_quantity(int quantity)
 {
-    if (quantity < SFA_MEASURE_VOLUME || quantity > SFA_MEASURE_VOLUME_LEFT) {
+    if (quantity < SFA_MEASURE_VOLUME || quantity > SFA_MEASURE_MIN_ANGLE_RESOLVED) {
         char message[120];
         std::snprintf(message, sizeof message, "unknown quantity %d (quantities are 0 to %d, enum sfa_measure_quantity)",
-                      quantity, SFA_MEASURE_VOLUME_LEFT);
+                      quantity, SFA_MEASURE_MIN_ANGLE_RESOLVED);
         fail(Status::argument, message);
     }
 }
@@ -71,6 +72,8 @@ double mesh_measure(const TriMesh &mesh, int quantity)
     case SFA_MEASURE_MAX_EDGE_LENGTH: return edge_lengths(mesh).max;
     case SFA_MEASURE_MAX_NORMAL_TURN: return max_normal_turn_degrees(mesh);
     case SFA_MEASURE_SELF_INTERSECTIONS: return self_intersection_count(mesh);
+    case SFA_MEASURE_UNRESOLVED_AREA: return resolved_angles(mesh, unresolved_triangles(mesh)).unresolved_area;
+    case SFA_MEASURE_MIN_ANGLE_RESOLVED: return resolved_angles(mesh, unresolved_triangles(mesh)).min_degrees;
     }
     fail(Status::internal, "a mesh measure without a formula");
 }

@@ -221,12 +221,78 @@ static void open_flat_patch(void **state)
     mesh_free(&grid);
 }
 
+/* Where the mesh does not resolve its surface: the surface turns by more than a right
+ * angle within a triangle's own size. A fine sphere turns by a few degrees an edge and a
+ * finely meshed cube by exactly a right angle at its creases: nothing is left out. A tetrahedron's faces
+ * are 109 degrees apart at every edge: everything is. A lens a hundredth as thick as it is
+ * wide folds round its rim within a triangle: its rim is left out, and its two faces, each
+ * meshed well, are not, for the walk from a face does not cross to the other. */
+static void unresolved_area_is_where_the_surface_turns_within_a_triangle(void **state)
+{
+    (void)state;
+    sfa_mesh_data sphere = shape_icosphere(3, 1.0); /* about 40 edges round */
+    sfa_surface *s = make_surface(&sphere, 0);
+    assert_true(measure(s, SFA_MEASURE_UNRESOLVED_AREA) == 0);
+    assert_true(measure(s, SFA_MEASURE_MIN_ANGLE_RESOLVED) == measure(s, SFA_MEASURE_MIN_ANGLE));
+    sfa_destroy(s);
+
+    const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    sfa_mesh_data box = shape_box(8, lo, hi);
+    s = make_surface(&box, 0);
+    assert_true(measure(s, SFA_MEASURE_UNRESOLVED_AREA) == 0);
+    assert_near(measure(s, SFA_MEASURE_MIN_ANGLE_RESOLVED), 45.0, 1e-12);
+    sfa_destroy(s);
+    mesh_free(&box);
+    /* The cube of 12 triangles is as thick as its triangles: from each, the opposite face
+     * lies within its size. */
+    s = make_cube_surface();
+    assert_true(measure(s, SFA_MEASURE_UNRESOLVED_AREA) == 1);
+    sfa_destroy(s);
+
+    double corners[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    int32_t faces[] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    const sfa_mesh_data tetrahedron = {.nverts = 4, .ntris = 4, .xyz = corners, .tris = faces};
+    s = make_surface(&tetrahedron, 0);
+    assert_true(measure(s, SFA_MEASURE_UNRESOLVED_AREA) == 1);
+    assert_true(measure(s, SFA_MEASURE_MIN_ANGLE_RESOLVED) == 180);
+    sfa_destroy(s);
+
+    sfa_mesh_data lens = shape_ellipsoid(4, 1.0, 1.0, 0.01);
+    s = make_surface(&lens, 0);
+    const double rim = measure(s, SFA_MEASURE_UNRESOLVED_AREA);
+    print_message("lens: %.3f of the area left out, smallest angle %.2f there and %.2f elsewhere\n", rim,
+                  measure(s, SFA_MEASURE_MIN_ANGLE), measure(s, SFA_MEASURE_MIN_ANGLE_RESOLVED));
+    assert_true(rim > 0.05 && rim < 0.5);
+    assert_true(measure(s, SFA_MEASURE_MIN_ANGLE_RESOLVED) > measure(s, SFA_MEASURE_MIN_ANGLE));
+    sfa_destroy(s);
+
+    /* Each component on its own: the sphere's nothing, the lens's rim. */
+    const double away[3] = {3, 0, 0};
+    mesh_translate(&lens, away);
+    mesh_append(&sphere, &lens);
+    s = make_surface(&sphere, 0);
+    int32_t *component = malloc(sizeof(int32_t) * (size_t)sphere.nverts);
+    assert_int_equal(sfa_get_components(s, sphere.nverts, component), SFA_OK);
+    const int32_t of_sphere = component[0], of_lens = component[sphere.nverts - 1];
+    double value = -1;
+    assert_int_equal(sfa_measure_component(s, of_sphere, SFA_MEASURE_UNRESOLVED_AREA, &value), SFA_OK);
+    assert_true(value == 0);
+    assert_int_equal(sfa_measure_component(s, of_lens, SFA_MEASURE_UNRESOLVED_AREA, &value), SFA_OK);
+    assert_near(value, rim, 1e-12);
+    const double whole = measure(s, SFA_MEASURE_UNRESOLVED_AREA);
+    assert_true(whole > 0 && whole < rim);
+    free(component);
+    sfa_destroy(s);
+    mesh_free(&lens);
+    mesh_free(&sphere);
+}
+
 static void bad_arguments_and_state(void **state)
 {
     (void)state;
     sfa_surface *s = make_cube_surface();
     double v = 77;
-    const int unknown[] = {-1, SFA_MEASURE_VOLUME_LEFT + 1, 1000, INT32_MIN};
+    const int unknown[] = {-1, SFA_MEASURE_MIN_ANGLE_RESOLVED + 1, 1000, INT32_MIN};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; ++i) {
         assert_error(s, sfa_measure(s, unknown[i], &v), SFA_ERR_ARGUMENT, "");
         assert_true(v == 77);
@@ -296,6 +362,7 @@ int main(void)
         cmocka_unit_test(folded_patch_turns_by_almost_180_degrees),
         cmocka_unit_test(a_cusp_is_no_self_intersection_but_an_overlap_is),
         cmocka_unit_test(overlapping_spheres_intersect),
+        cmocka_unit_test(unresolved_area_is_where_the_surface_turns_within_a_triangle),
         cmocka_unit_test(bad_arguments_and_state),
         cmocka_unit_test(phase_seconds_accumulate),
     };

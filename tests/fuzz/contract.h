@@ -133,7 +133,7 @@ static inline void fuzz_query_everything(sfa_surface *s)
     double value = 0, *d3 = malloc(sizeof(double) * 3 * n), *e3 = malloc(sizeof(double) * 3 * n);
     double *s2 = malloc(sizeof(double) * 2 * n), *b3 = malloc(sizeof(double) * 3 * n);
     int32_t *i1 = malloc(sizeof(int32_t) * n), *edges = malloc(sizeof(int32_t) * 6 * m), count = 0;
-    for (int q = 0; q <= SFA_MEASURE_VOLUME_LEFT; ++q) {
+    for (int q = 0; q <= SFA_MEASURE_MIN_ANGLE_RESOLVED; ++q) {
         FUZZ_QUERY(s, sfa_measure(s, q, &value));
         FUZZ_QUERY(s, sfa_measure_component(s, 0, q, &value));
     }
