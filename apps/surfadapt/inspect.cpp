@@ -32,6 +32,9 @@ int info_command(int argc, char **argv)
                 measure(s, SFA_MEASURE_MAX_ANGLE), measure(s, SFA_MEASURE_MAX_ASPECT_RATIO));
     std::printf("  edge length: min %.6g, mean %.6g, max %.6g\n", measure(s, SFA_MEASURE_MIN_EDGE_LENGTH),
                 measure(s, SFA_MEASURE_MEAN_EDGE_LENGTH), measure(s, SFA_MEASURE_MAX_EDGE_LENGTH));
+    std::printf("  unresolved (the surface turns by more than a right angle within a triangle): %.2f %% of the "
+                "area; angles from %.3f degrees elsewhere\n",
+                100 * measure(s, SFA_MEASURE_UNRESOLVED_AREA), measure(s, SFA_MEASURE_MIN_ANGLE_RESOLVED));
     print_components(summarize_components(s));
     sfa_destroy(s);
     return 0;

@@ -108,6 +108,20 @@ hairpin_judged() {
     below "$(figure "$work/hairpin_angles.txt" unresolved_area)" 0.5
 }
 check "on a hairpin the needles across its fold are left out, the layers' right triangles kept" hairpin_judged
+# The library's own measures of the same rule (SFA_MEASURE_UNRESOLVED_AREA and
+# SFA_MEASURE_MIN_ANGLE_RESOLVED), as info prints them: the same figures (fidelity prints
+# the share to three digits).
+info_agrees() { # info_agrees MESH FIDELITY_JSON
+  line=$("$tool" info "$1" | grep 'unresolved') || return 1
+  echo "$line"
+  share=$(echo "$line" | sed -n 's/.*: \([0-9.]*\) % of the area.*/\1/p')
+  angle=$(echo "$line" | sed -n 's/.*angles from \([0-9.]*\) degrees.*/\1/p')
+  awk -v s="$share" -v a="$angle" -v fs="$(figure "$2" unresolved_area)" -v fa="$(figure "$2" min_angle_resolved)" \
+    'BEGIN { d = s - 100 * fs; e = a - fa; exit !(s != "" && a != "" && d * d < 1e-2 && e * e < 1e-4) }'
+}
+check "info gives the library's share left out and angle elsewhere, as fidelity does: the hairpin" \
+  info_agrees "$work/hairpin.obj" "$work/hairpin_angles.txt"
+check "... and the start sphere, nothing left out" info_agrees "$work/tracked/t0.obj" "$work/sphere_angles.txt"
 
 check "a mesh that is not a checkpoint is refused with the reason" \
   sh -c "printf 'v 0 0 0\n' >'$work/plain.obj'; '$fidelity' '$work/plain.obj' 2>&1 | grep -q 'not a surfadapt checkpoint'"
