@@ -381,7 +381,7 @@ enum sfa_measure_quantity {
         watches it to see where its interface has become thinner than its mesh: finer
         edges there (::SFA_PARAM_THIN_SHEET_EDGE_RATIO, sfa_set_size_field()) or merging
         (::SFA_PARAM_TOPOLOGY_CHANGE). Dimensionless. Costs a walk over a few dozen
-        triangles from each (0.1 s for 200k triangles on two cores). */
+        triangles from each (about 0.1 s for 200k triangles on two cores). */
     SFA_MEASURE_UNRESOLVED_AREA = 20,
     /** Smallest interior angle of any triangle outside the places of
         ::SFA_MEASURE_UNRESOLVED_AREA, degrees; 180 if there is none. A triangle that must

@@ -24,11 +24,13 @@ bool within(const TriMesh &mesh, int32_t q, const Vec3 &point, double radius)
 {
     const Triangle &c = mesh.tri[q];
     const Vec3 &a = mesh.pos[c[0]], &b = mesh.pos[c[1]], &d = mesh.pos[c[2]];
-    const double nearest_corner2 = std::min({(a - point).squaredNorm(), (b - point).squaredNorm(), (d - point).squaredNorm()});
+    const double nearest_corner2 =
+        std::min({(a - point).squaredNorm(), (b - point).squaredNorm(), (d - point).squaredNorm()});
     if (nearest_corner2 <= radius * radius)
         return true;
     // Every point of q lies within its longest edge of each corner.
-    const double reach = radius + std::sqrt(std::max({(b - a).squaredNorm(), (d - b).squaredNorm(), (a - d).squaredNorm()}));
+    const double reach =
+        radius + std::sqrt(std::max({(b - a).squaredNorm(), (d - b).squaredNorm(), (a - d).squaredNorm()}));
     if (nearest_corner2 > reach * reach)
         return false;
     return (closest_point_on_triangle(point, a, b, d) - point).norm() <= radius;

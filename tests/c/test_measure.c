@@ -223,10 +223,11 @@ static void open_flat_patch(void **state)
 
 /* Where the mesh does not resolve its surface: the surface turns by more than a right
  * angle within a triangle's own size. A fine sphere turns by a few degrees an edge and a
- * finely meshed cube by exactly a right angle at its creases: nothing is left out. A tetrahedron's faces
- * are 109 degrees apart at every edge: everything is. A lens a hundredth as thick as it is
- * wide folds round its rim within a triangle: its rim is left out, and its two faces, each
- * meshed well, are not, for the walk from a face does not cross to the other. */
+ * finely meshed cube by exactly a right angle at its creases: nothing is left out. A
+ * tetrahedron's faces are 109 degrees apart at every edge: everything is. A lens a
+ * hundredth as thick as it is wide folds round its rim within a triangle: its rim is left
+ * out, and its two faces, each meshed well, are not, for the walk from a face does not
+ * cross to the other. */
 static void unresolved_area_is_where_the_surface_turns_within_a_triangle(void **state)
 {
     (void)state;
