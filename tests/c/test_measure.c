@@ -266,6 +266,20 @@ static void unresolved_area_is_where_the_surface_turns_within_a_triangle(void **
     assert_true(rim > 0.05 && rim < 0.5);
     assert_true(measure(s, SFA_MEASURE_MIN_ANGLE_RESOLVED) > measure(s, SFA_MEASURE_MIN_ANGLE));
     sfa_destroy(s);
+    /* The rule has no length in it: the same lens 2^-40 and 2^40 times as large (scaled
+     * exactly) gives the same share to the bit, and 1e5 from the origin nearly so. */
+    const double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, far[3] = {1e5, -1e5, 1e5};
+    for (int k = 0; k < 3; ++k) {
+        sfa_mesh_data moved = mesh_copy(&lens);
+        if (k < 2)
+            mesh_rotate_scale(&moved, identity, ldexp(1.0, k ? 40 : -40));
+        else
+            mesh_translate(&moved, far);
+        s = make_surface(&moved, 0);
+        assert_near(measure(s, SFA_MEASURE_UNRESOLVED_AREA), rim, k < 2 ? 0 : 1e-6);
+        sfa_destroy(s);
+        mesh_free(&moved);
+    }
 
     /* Each component on its own: the sphere's nothing, the lens's rim. */
     const double away[3] = {3, 0, 0};
