@@ -359,7 +359,8 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "fidelity: %s\n", message);
         return 1;
     }
-    const std::vector<char> unresolved = surface_resolution::unresolved_triangles(mesh);
+    const surface_resolution::Resolution resolution = surface_resolution::resolution_of(mesh);
+    const std::vector<char> &unresolved = resolution.unresolved;
     if (unresolved.size() != static_cast<size_t>(mesh.ntris)) {
         std::fprintf(stderr, "fidelity: %s: not a closed or open manifold mesh that sfa_set_mesh would take\n", path);
         mesh_free(&mesh);
@@ -372,15 +373,13 @@ int main(int argc, char **argv)
                   "angles %.2f to %.2f degrees, from %.2f where the surface is resolved (%d triangles below %g "
                   "degrees, %d of them where it turns by more than a right angle within their size, which is %.2f %% "
                   "of the area)",
-                  resolved.smallest_anywhere, resolved.largest_anywhere, resolved.smallest, resolved.below, small_angle,
-                  resolved.below_unresolved,
-                  100 * resolved.unresolved_area);
+                  resolved.smallest_anywhere, resolved.largest_anywhere, resolution.angles.min_degrees, resolved.below,
+                  small_angle, resolved.below_unresolved, 100 * resolution.angles.unresolved_area);
     std::snprintf(angle_json, sizeof angle_json,
                   "\"min_angle\":%.2f,\"max_angle\":%.2f,\"min_angle_resolved\":%.2f,\"below_5\":%d,"
                   "\"below_5_unresolved\":%d,\"unresolved_area\":%.2e",
-                  resolved.smallest_anywhere, resolved.largest_anywhere, resolved.smallest, resolved.below,
-                  resolved.below_unresolved,
-                  resolved.unresolved_area);
+                  resolved.smallest_anywhere, resolved.largest_anywhere, resolution.angles.min_degrees,
+                  resolved.below, resolved.below_unresolved, resolution.angles.unresolved_area);
     if (angles_only) {
         std::printf("%s: %s, T = %g, t = %g, %d triangles: %s\n", path, info.flow.c_str(), info.period, info.time,
                     mesh.ntris, angle_text);

@@ -61,53 +61,49 @@ inline std::vector<int32_t> neighbours_across_edges(const sfa_mesh_data &mesh)
     return across;
 }
 
-// 1 for each triangle near which the surface turns by more than a right angle within its
-// own size, 0 for the others: the library's rule (geometry/surface_resolution.hpp, behind
-// SFA_MEASURE_UNRESOLVED_AREA), on a checkpoint's mesh in its own triangle order. Empty
-// if the mesh is not one sfa_set_mesh would take.
-inline std::vector<char> unresolved_triangles(const sfa_mesh_data &mesh)
+// Where a checkpoint's mesh, in its own triangle order, does not resolve its surface
+// (unresolved[t] != 0), by the library's rule (geometry/surface_resolution.hpp, behind
+// SFA_MEASURE_UNRESOLVED_AREA), and the library's figures of it. `unresolved` is empty if
+// the mesh is not one sfa_set_mesh would take.
+struct Resolution {
+    std::vector<char> unresolved;
+    sfa::ResolvedAngles angles; // the share of the area marked, the smallest angle elsewhere
+};
+
+inline Resolution resolution_of(const sfa_mesh_data &mesh)
 {
     try {
-        return sfa::unresolved_triangles(sfa::validated_mesh({mesh.nverts, mesh.xyz, mesh.ntris, mesh.tris, 0, false}));
+        const sfa::TriMesh tri = sfa::validated_mesh({mesh.nverts, mesh.xyz, mesh.ntris, mesh.tris, 0, false});
+        std::vector<char> unresolved = sfa::unresolved_triangles(tri);
+        const sfa::ResolvedAngles angles = sfa::resolved_angles(tri, unresolved);
+        return {std::move(unresolved), angles};
     } catch (const sfa::Error &) {
         return {};
     }
 }
 
-// The range of the mesh's angles; the angles where it resolves its surface, and how many
-// below `threshold` degrees lie where it does not.
+// The range of the mesh's angles, and how many triangles with an angle below `threshold`
+// degrees there are, and of them where it does not resolve its surface.
 struct AnglesWhereResolved {
     double smallest_anywhere = 180, largest_anywhere = 0; // of every triangle
-    double smallest = 180;        // the smallest angle of any triangle not marked
     int32_t below = 0;            // triangles with an angle below the threshold
     int32_t below_unresolved = 0; // of them, those marked
-    double unresolved_area = 0;   // the marked triangles' share of the area
 };
 
-// `unresolved`: unresolved_triangles(mesh).
 inline AnglesWhereResolved angles_where_resolved(const sfa_mesh_data &mesh, const std::vector<char> &unresolved,
                                                  double threshold)
 {
     AnglesWhereResolved result;
-    double area = 0, unresolved_area = 0;
     for (int32_t t = 0; t < mesh.ntris; ++t) {
         const std::array<double, 3> angles = triangle_angles(mesh, t);
         const double smallest = *std::min_element(angles.begin(), angles.end());
         result.smallest_anywhere = std::min(result.smallest_anywhere, smallest);
         result.largest_anywhere = std::max(result.largest_anywhere, *std::max_element(angles.begin(), angles.end()));
-        const Vec3 a = corner(mesh, t, 0);
-        const double size = (corner(mesh, t, 1) - a).cross(corner(mesh, t, 2) - a).norm();
-        area += size;
-        if (unresolved[t])
-            unresolved_area += size;
-        else
-            result.smallest = std::min(result.smallest, smallest);
         if (smallest < threshold) {
             ++result.below;
             result.below_unresolved += unresolved[t];
         }
     }
-    result.unresolved_area = area > 0 ? unresolved_area / area : 0;
     return result;
 }
 

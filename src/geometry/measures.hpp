@@ -39,7 +39,9 @@ struct AngleRange {
     double min_degrees;
     double max_degrees;
 };
-AngleRange angle_range(const TriMesh &mesh);
+// Over every triangle, or with `left_out`, over those with left_out[t] == 0; with none
+// left, min_degrees is infinite and max_degrees 0.
+AngleRange angle_range(const TriMesh &mesh, const std::vector<char> *left_out = nullptr);
 
 struct EdgeLengths {
     double min;

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "geometry/surface_resolution.hpp"
 
-#include "geometry/angles.hpp"
 #include "geometry/distance.hpp"
+#include "geometry/measures.hpp"
+#include "geometry/quadric.hpp"
 #include "mesh/parallel.hpp"
 
 #include <algorithm>
@@ -77,10 +78,8 @@ std::vector<char> unresolved_triangles(const TriMesh &mesh)
     const int32_t n = mesh.num_triangles();
     std::vector<Vec3> normal(n);
 #pragma omp parallel for num_threads(loop_threads()) schedule(static)
-    for (int32_t t = 0; t < n; ++t) {
-        const Triangle &c = mesh.tri[t];
-        normal[t] = (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]).normalized();
-    }
+    for (int32_t t = 0; t < n; ++t)
+        normal[t] = face_area_vector(mesh, t).normalized();
     std::vector<char> unresolved(n, 0);
     std::vector<int32_t> visited;
 #pragma omp parallel for num_threads(loop_threads()) schedule(dynamic, 256) firstprivate(visited)
@@ -91,28 +90,13 @@ std::vector<char> unresolved_triangles(const TriMesh &mesh)
 
 ResolvedAngles resolved_angles(const TriMesh &mesh, const std::vector<char> &unresolved)
 {
-    const auto twice_area = [&](int32_t t) {
-        const Triangle &c = mesh.tri[t];
-        return (mesh.pos[c[1]] - mesh.pos[c[0]]).cross(mesh.pos[c[2]] - mesh.pos[c[0]]).norm();
-    };
-    // The areas summed in a fixed order, the least angle exact: the same for any threads.
+    // The areas summed in a fixed order: the same for any threads.
     const Eigen::Vector2d area = ordered_sum(mesh.num_triangles(), Eigen::Vector2d::Zero().eval(), [&](int32_t t) {
-        const double size = twice_area(t);
+        const double size = face_area_vector(mesh, t).norm();
         return Eigen::Vector2d(size, unresolved[t] ? size : 0);
     });
-    double smallest = pi;
-#pragma omp parallel for num_threads(loop_threads()) schedule(static) reduction(min : smallest)
-    for (int32_t t = 0; t < mesh.num_triangles(); ++t) {
-        if (unresolved[t])
-            continue;
-        const Triangle &c = mesh.tri[t];
-        for (int i = 0; i < 3; ++i) {
-            const Vec3 &corner = mesh.pos[c[i]];
-            const Vec3 u = mesh.pos[c[(i + 1) % 3]] - corner, w = mesh.pos[c[(i + 2) % 3]] - corner;
-            smallest = std::min(smallest, std::atan2(u.cross(w).norm(), u.dot(w)));
-        }
-    }
-    return {area[0] > 0 ? area[1] / area[0] : 0, smallest * degrees_per_radian};
+    const double smallest = angle_range(mesh, &unresolved).min_degrees;
+    return {area[0] > 0 ? area[1] / area[0] : 0, std::isinf(smallest) ? 180 : smallest};
 }
 
 } // namespace sfa
