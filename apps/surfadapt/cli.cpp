@@ -37,6 +37,29 @@ double measure(const sfa_surface *s, int quantity)
     return value;
 }
 
+void print_synopsis(const char *command)
+{
+    const std::string text = usage, head = std::string("\n  ") + command + " ";
+    size_t line = text.find(head);
+    if (line == std::string::npos) {
+        std::fputs("(surfadapt --help explains every command and option)\n", stderr);
+        return;
+    }
+    // The command's first line, then the lines that continue its options (indented further
+    // and opening with '['); its explanation follows, indented by eight.
+    const std::string prefix = "usage: surfadapt ", continuation = "\n          [";
+    const std::string indent(prefix.size() + std::strlen(command) + 1, ' ');
+    line += 3; // past "\n  "
+    size_t end = text.find('\n', line);
+    std::fprintf(stderr, "%s%s\n", prefix.c_str(), text.substr(line, end - line).c_str());
+    while (text.compare(end, continuation.size(), continuation) == 0) {
+        line = end + continuation.size() - 1;
+        end = text.find('\n', line);
+        std::fprintf(stderr, "%s%s\n", indent.c_str(), text.substr(line, end - line).c_str());
+    }
+    std::fprintf(stderr, "(surfadapt %s --help explains the options)\n", command);
+}
+
 sfa_surface *surface_from_file(const char *path, bool drop_unreferenced)
 {
     sfa_mesh_data mesh{};
@@ -78,7 +101,8 @@ bool read_drop_option(int argc, char **argv, int first, const char *command, boo
 {
     for (int i = first; i < argc; ++i) {
         if (std::strcmp(argv[i], "--drop-unreferenced") != 0) {
-            std::fprintf(stderr, "surfadapt %s: unknown option '%s'\n%s", command, argv[i], usage);
+            std::fprintf(stderr, "surfadapt %s: unknown option '%s'\n", command, argv[i]);
+            print_synopsis(command);
             return false;
         }
         drop = true;

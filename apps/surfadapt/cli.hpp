@@ -10,6 +10,11 @@
 
 extern const char *const usage;
 
+// After a usage error: the command's lines of `usage` (its name and options, not their
+// explanation) and where the rest is, on standard error, so that the error itself stays
+// on the screen.
+void print_synopsis(const char *command);
+
 // Prints "surfadapt: what: <the library's message>", destroys s, returns 1.
 int fail(sfa_surface *s, const char *what);
 

@@ -141,7 +141,8 @@ int demo_command(int argc, char **argv)
         else if (!std::strcmp(argv[i], "--out") && i + 1 < argc)
             out_dir = argv[++i];
         else {
-            std::fprintf(stderr, "surfadapt demo: unknown option '%s'\n%s", argv[i], usage);
+            std::fprintf(stderr, "surfadapt demo: unknown option '%s'\n", argv[i]);
+            print_synopsis("demo");
             return 2;
         }
     }

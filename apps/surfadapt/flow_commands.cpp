@@ -53,7 +53,8 @@ bool read_flow_options(int argc, char **argv, int first, FlowRun &run, const cha
         else if (!std::strcmp(argv[i], "--period") && !std::strcmp(command, "vortex"))
             ++i; // read by the caller
         else {
-            std::fprintf(stderr, "surfadapt %s: unknown option '%s'\n%s", command, argv[i], usage);
+            std::fprintf(stderr, "surfadapt %s: unknown option '%s'\n", command, argv[i]);
+            print_synopsis(command);
             return false;
         }
     }

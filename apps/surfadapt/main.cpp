@@ -50,8 +50,9 @@ const char *const usage =
     "        changes as the operations themselves change it), --no-smoothing leaves the\n"
     "        steps that are not adapted unsmoothed (with --adapt-every 0: advection alone).\n"
     "        Prints a table every R steps (20) and, with --out, writes DIR/surface.pvd and\n"
-    "        one .vtu per table row; with --checkpoints, DIR/t<time>.obj at t = 0, T/4, T/2,\n"
-    "        3T/4 and T for bench/fidelity (the shape error by backtracing), and if a call\n"
+    "        one .vtu per table row; with --checkpoints, DIR/t<time>.obj at t = 0 and at\n"
+    "        the quarters of the run (T/4, T/2, 3T/4, T without --steps) for bench/fidelity\n"
+    "        (the shape error by backtracing), and if a call\n"
     "        fails, DIR/failed-t<time>.obj (the surface before that call); --resume goes\n"
     "        on from such a checkpoint's mesh and time (with default parameters: to look\n"
     "        at a late stage without running all of it);\n"
@@ -74,9 +75,10 @@ const char *const usage =
     "        merge vertices at exactly the same position, triangulate polygons (ear\n"
     "        clipping), drop faces with missing vertices, degenerate and duplicate\n"
     "        triangles, orient each component consistently, split bow-tie vertices, turn\n"
-    "        inside-out closed components outward, drop unused vertices; then say whether\n"
-    "        the library accepts the result. Edges of three or more triangles and\n"
-    "        non-orientable components are reported, not changed\n"
+    "        inside-out closed components outward, drop unused vertices, separate the\n"
+    "        sheets through an edge of three or more triangles; then say whether the\n"
+    "        library accepts the result. Non-orientable components are reported, not\n"
+    "        changed\n"
     "  features IN OUT [--drop-unreferenced]\n"
     "        read a mesh, detect its ridges and corners and write them: to OUT.vtk a\n"
     "        legacy VTK file for ParaView, triangles (POLYGONS) and ridge edges (LINES)\n"
@@ -90,7 +92,8 @@ const char *const usage =
     "        binary; written binary), .mesh (Medit/MMG; quadrilaterals read as two\n"
     "        triangles), .vtk (legacy ASCII POLYDATA), .vtu (VTK XML; written binary\n"
     "        appended). Messages number vertices as the file does (from 1 in OBJ and\n"
-    "        Medit files, from 0 in the others)\n"
+    "        Medit files, from 0 in the others). With --drop-unreferenced, vertices no\n"
+    "        triangle uses are dropped (SFA_PARAM_DROP_UNREFERENCED) instead of refused\n"
     "  --help, or --help after any command\n"
     "        this text\n"
     "  --version\n"
@@ -144,6 +147,9 @@ int main(int argc, char **argv)
         return features_command(argc, argv);
     if (command == "convert")
         return convert_command(argc, argv);
-    std::fprintf(stderr, "surfadapt: unknown command '%s'\n%s", argv[1], usage);
+    std::fprintf(stderr,
+                 "surfadapt: unknown command '%s'; the commands are demo, enright, vortex, remesh, info, "
+                 "repair, features and convert (surfadapt --help explains them)\n",
+                 argv[1]);
     return 2;
 }

@@ -103,7 +103,8 @@ int remesh_surface(sfa_surface *s, const char *name, double edge_length, bool is
 int remesh_command(int argc, char **argv)
 {
     if (argc < 4) {
-        std::fprintf(stderr, "surfadapt remesh: needs an input and an output mesh file\n%s", usage);
+        std::fprintf(stderr, "surfadapt remesh: needs an input and an output mesh file\n");
+        print_synopsis("remesh");
         return 2;
     }
     const char *in = argv[2], *out = argv[3];
@@ -117,7 +118,8 @@ int remesh_command(int argc, char **argv)
         else if (!std::strcmp(argv[i], "--drop-unreferenced"))
             drop = true;
         else {
-            std::fprintf(stderr, "surfadapt remesh: unknown option '%s'\n%s", argv[i], usage);
+            std::fprintf(stderr, "surfadapt remesh: unknown option '%s'\n", argv[i]);
+            print_synopsis("remesh");
             return 2;
         }
     }

@@ -63,7 +63,8 @@ void suggest_repair(const char *path)
 int repair_command(int argc, char **argv)
 {
     if (argc != 4) {
-        std::fprintf(stderr, "surfadapt repair: needs an input and an output mesh file\n%s", usage);
+        std::fprintf(stderr, "surfadapt repair: needs an input and an output mesh file\n");
+        print_synopsis("repair");
         return 2;
     }
     const char *in = argv[2], *out = argv[3];

@@ -75,6 +75,13 @@ check "a denoising weight outside [0, 1] is refused" sh -c "'$tool' enright --de
 check "vortex refuses a period other than 2 or 6" \
   sh -c "'$tool' vortex --period 3 2>/dev/null; [ \$? -eq 2 ]"
 check "an unknown option is refused" sh -c "'$tool' enright --bogus 2>/dev/null; [ \$? -eq 2 ]"
+# The error stays on the screen: the command's synopsis follows it, not the whole help.
+check "an unknown option is named, then the command's synopsis only" \
+  sh -c "'$tool' enright --bogus 2>'$work/bogus.txt'; head -n 1 '$work/bogus.txt' | grep -q \"unknown option '--bogus'\" &&
+         grep -q '^usage: surfadapt enright .*--resolution N' '$work/bogus.txt' &&
+         grep -q -- '--json' '$work/bogus.txt' && [ \$(wc -l <'$work/bogus.txt') -le 8 ]"
+check "an unknown command lists the commands" \
+  sh -c "'$tool' bogus 2>&1 | grep -q 'the commands are demo, enright, vortex, remesh, info, repair, features and convert'"
 check "an unwritable output directory fails" \
   sh -c "! '$tool' enright --resolution 4 --steps 1 --out '$work/no/such/dir' >/dev/null 2>&1"
 
