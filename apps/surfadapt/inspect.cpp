@@ -13,7 +13,8 @@
 int info_command(int argc, char **argv)
 {
     if (argc < 3) {
-        std::fprintf(stderr, "surfadapt info: which file?\n%s", usage);
+        std::fprintf(stderr, "surfadapt info: which file?\n");
+        print_synopsis("info");
         return 2;
     }
     bool drop = false;
@@ -33,8 +34,13 @@ int info_command(int argc, char **argv)
     std::printf("  edge length: min %.6g, mean %.6g, max %.6g\n", measure(s, SFA_MEASURE_MIN_EDGE_LENGTH),
                 measure(s, SFA_MEASURE_MEAN_EDGE_LENGTH), measure(s, SFA_MEASURE_MAX_EDGE_LENGTH));
     std::printf("  unresolved (the surface turns by more than a right angle within a triangle): %.2f %% of the "
-                "area; angles from %.3f degrees elsewhere\n",
-                100 * measure(s, SFA_MEASURE_UNRESOLVED_AREA), measure(s, SFA_MEASURE_MIN_ANGLE_RESOLVED));
+                "area; ",
+                100 * measure(s, SFA_MEASURE_UNRESOLVED_AREA));
+    const double resolved_angle = measure(s, SFA_MEASURE_MIN_ANGLE_RESOLVED);
+    if (resolved_angle < 180) // 180: the measure's "none" (no triangle's smallest angle is above 60)
+        std::printf("angles from %.3f degrees elsewhere\n", resolved_angle);
+    else
+        std::printf("no triangle elsewhere\n");
     print_components(summarize_components(s));
     sfa_destroy(s);
     return 0;
@@ -43,7 +49,8 @@ int info_command(int argc, char **argv)
 int features_command(int argc, char **argv)
 {
     if (argc < 4) {
-        std::fprintf(stderr, "surfadapt features: needs an input and an output mesh file\n%s", usage);
+        std::fprintf(stderr, "surfadapt features: needs an input and an output mesh file\n");
+        print_synopsis("features");
         return 2;
     }
     bool drop = false;
@@ -81,7 +88,8 @@ int features_command(int argc, char **argv)
 int convert_command(int argc, char **argv)
 {
     if (argc != 4) {
-        std::fprintf(stderr, "surfadapt convert: needs an input and an output mesh file\n%s", usage);
+        std::fprintf(stderr, "surfadapt convert: needs an input and an output mesh file\n");
+        print_synopsis("convert");
         return 2;
     }
     const char *in = argv[2], *out = argv[3];

@@ -122,6 +122,11 @@ info_agrees() { # info_agrees MESH FIDELITY_JSON
 check "info gives the library's share left out and angle elsewhere, as fidelity does: the hairpin" \
   info_agrees "$work/hairpin.obj" "$work/hairpin_angles.txt"
 check "... and the start sphere, nothing left out" info_agrees "$work/tracked/t0.obj" "$work/sphere_angles.txt"
+# A tetrahedron turns by more than a right angle within every triangle: nothing is left to
+# give an angle, and info says so rather than print the measure's "none" (180) as one.
+check "info on a mesh unresolved everywhere says no triangle is left" \
+  sh -c "printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >'$work/tet.obj' &&
+         '$tool' info '$work/tet.obj' | grep -q '100.00 % of the area; no triangle elsewhere'"
 
 check "a mesh that is not a checkpoint is refused with the reason" \
   sh -c "printf 'v 0 0 0\n' >'$work/plain.obj'; '$fidelity' '$work/plain.obj' 2>&1 | grep -q 'not a surfadapt checkpoint'"
