@@ -305,10 +305,20 @@ void print_by_turn(const sfa_mesh_data &mesh, const Samples &samples, const std:
 // The smallest angle the issue asks every checkpoint to keep, in degrees.
 constexpr double small_angle = 5;
 
-int usage()
+const char *const usage_text =
+    "usage: fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--worst K] [--by-turn]\n"
+    "                [--angles-only] [--json]\n"
+    "  the shape error of a checkpoint of 'surfadapt enright|vortex --checkpoints DIR', by\n"
+    "  carrying points of the mesh back to t = 0 (RK4, N steps a period; default 1000) and\n"
+    "  measuring how far from the start sphere they land; --check-step also with 2N steps,\n"
+    "  --worst K lists the K largest, --by-turn groups the error by the normals' turn,\n"
+    "  --angles-only prints the angles alone, --json one JSON line\n";
+
+int usage(const char *wrong = nullptr)
 {
-    std::fprintf(stderr, "usage: fidelity CHECKPOINT.obj [--steps-per-period N] [--check-step] [--worst K] [--by-turn] "
-                         "[--angles-only] [--json]\n");
+    if (wrong)
+        std::fprintf(stderr, "fidelity: unknown option or missing value: '%s'\n", wrong);
+    std::fputs(usage_text, stderr);
     return 2;
 }
 
@@ -316,14 +326,16 @@ int usage()
 
 int main(int argc, char **argv)
 {
-    if (argc < 2)
-        return usage();
-    const char *path = argv[1];
+    const char *path = nullptr;
     int steps_per_period = 1000;
     bool check_step = false, json = false;
     int worst_count = 0;
     bool by_turn = false, angles_only = false;
-    for (int i = 2; i < argc; ++i) {
+    for (int i = 1; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
+            std::fputs(usage_text, stdout);
+            return 0;
+        }
         if (!std::strcmp(argv[i], "--steps-per-period") && i + 1 < argc)
             steps_per_period = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--check-step"))
@@ -336,9 +348,13 @@ int main(int argc, char **argv)
             angles_only = true;
         else if (!std::strcmp(argv[i], "--json"))
             json = true;
+        else if (argv[i][0] != '-' && !path)
+            path = argv[i];
         else
-            return usage();
+            return usage(argv[i]);
     }
+    if (!path)
+        return usage();
     if (steps_per_period < 1)
         return usage();
     Checkpoint info;
