@@ -2,7 +2,8 @@
 # surfadapt — the one build entry.
 #   make            the libraries, the Fortran module and the command-line tool
 #   make demo       build and run the demonstration
-#   make test       the fast tier: unit and C tests of the optimized build (about a minute)
+#   make examples   the example hosts (C, Fortran) and bench/fidelity
+#   make test       the fast tier: unit and C tests of the optimized build (80 s once built)
 #   make check      build and run every test (C, unit, Fortran, Python, plugin, ABI, install,
 #                   command line, sanitizers); what CI runs
 #   make check-python  the Python binding's tests alone (Debian's python3-numpy)
@@ -112,7 +113,7 @@ SOAK_CHECK_ITERATIONS := 40
 
 TEST_RPATH := -Wl,-rpath,'$$ORIGIN/../../lib'
 
-.PHONY: all deps deps-check deps-doc test check check-programs check-python demo bench doc install uninstall clean abi-check abi-baseline fuzz \
+.PHONY: all deps deps-check deps-doc test check check-programs check-python demo examples bench doc install uninstall clean abi-check abi-baseline fuzz \
         soak
 .DEFAULT_GOAL := all
 # Keep object files of pattern-built programs, so that rebuilds are incremental.
@@ -165,9 +166,15 @@ $(CLI): $(APP_OBJS) $(LIB_SO) $(LIB_DEV)
 	@mkdir -p $(@D)
 	$(CXX) $(OPENMP) -o $@ $(APP_OBJS) -Llib -lsurfadapt -Wl,-rpath,'$$ORIGIN/../lib'
 
-demo: all
+# Built with one job per core (JOBS=N to change), as `make check` is.
+demo: deps
+	@$(MAKE) --no-print-directory -j$(JOBS) all
 	@mkdir -p build/demo
 	$(CLI) demo --out build/demo
+
+# The example hosts (bindings/fortran/examples, examples/) and bench/fidelity, the shape
+# error by backtracing; `make check` builds and runs them too.
+examples: all $(C_EXAMPLE) $(FORTRAN_EXAMPLE) $(FIDELITY)
 
 # ------------------------------------------------------------------ tests
 build/tests/test_%: build/tests/c/test_%.o $(TEST_SUPPORT_OBJ) $(ALLOC_HOOK_OBJ) $(LIB_SO) $(LIB_DEV)
@@ -231,7 +238,8 @@ $(PLUGIN_TEST): tests/plugin/test_dlopen.c | deps
 # OpenMP threads that wait at a barrier sleep instead of spinning (unless the caller chose
 # otherwise): on cores shared with other work, spinning made unit_crossing_guard and
 # test_adapt ten to twenty times slower (130 s instead of 7 s). Results do not depend on it.
-test: deps-check $(UNIT_TESTS) $(C_TESTS)
+test: deps-check
+	@$(MAKE) --no-print-directory -j$(JOBS) $(UNIT_TESTS) $(C_TESTS)
 	@OMP_WAIT_POLICY=$${OMP_WAIT_POLICY:-passive} scripts/run-tests.sh $(UNIT_TESTS) $(C_TESTS)
 
 # What `make check` runs, built in parallel (one job per core, JOBS=N to change) once

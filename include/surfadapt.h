@@ -195,9 +195,9 @@ enum sfa_param {
     /** 1: sfa_adapt() and sfa_smooth() do not pass the surface through itself where a
         sheet is thinner than an edge (see sfa_adapt()); 0: they do not check. The check
         costs little where the surface is nowhere thin (finding the thin places, about
-        3 % of an adaptation), and up to about 10 % of the adaptation time where much of it
-        is (the Enright test at its most stretched). A host whose surface cannot thin out
-        may set 0. A flag, 0 or 1; default 1. */
+        3 % of an adaptation), and more where much of it is: about a sixth of the Enright
+        test's whole run (10.9 s against 9.3 s without it, two cores; see the README). A
+        host whose surface cannot thin out may set 0. A flag, 0 or 1; default 1. */
     SFA_PARAM_CROSSING_GUARD = 20,
     /** 1: after their own operations, sfa_smooth() (after each sweep) and sfa_adapt() give
         every closed component (bubble, drop) its enclosed volume back, each on its own by
@@ -244,8 +244,8 @@ enum sfa_param {
         already meet when the call begins are not limited. Neighbours (sharing a vertex)
         are left to the fold control. The search costs most where a step carries vertices
         across many edge lengths: with it the Enright run (steps of about 4 edge lengths)
-        and the vortex run with T = 2 take about 1.25 times as long on one thread (see the
-        README). 0: motion is cut only against folding. Off by default for that cost, and
+        and the vortex run with T = 2 take about 1.3 times as long, on one thread or two
+        (see the README). 0: motion is cut only against folding. Off by default for that cost, and
         because without topology change a flow that brings two sheets together (the vortex
         flow with T = 6) would stop there.
         ::SFA_PARAM_TOPOLOGY_CHANGE turns it on as well, and adds contact: see there.
