@@ -774,8 +774,9 @@ int sfa_measure(const sfa_surface *s, int quantity, double *value);
  * @param s           the surface.
  * @param edge_length `nverts` lengths > 0, host length units (read only, not kept); NULL
  *                    clears the size field, and ::SFA_PARAM_EDGE_LENGTH applies again.
- * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL handle; a value <= 0 or not finite: names the
- *         vertex, in the numbering of the last sfa_set_mesh(); nothing changed),
+ * @return ::SFA_OK, ::SFA_ERR_ARGUMENT (NULL handle; a value <= 0: names the vertex, in
+ *         the numbering of the last sfa_set_mesh(); nothing changed), ::SFA_ERR_NUMERIC (a
+ *         value not finite, as for the other fields: named the same way; nothing changed),
  *         ::SFA_ERR_STATE (no mesh), ::SFA_ERR_MEMORY.
  */
 int sfa_set_size_field(sfa_surface *s, const double *edge_length);

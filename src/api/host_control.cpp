@@ -14,6 +14,8 @@ namespace {
 // For a mesh that is set, `edge_length` not NULL.
 void set_size_field(sfa_surface *s, const double *edge_length)
 {
+    // A length that is not a number or infinite is a non-finite field value, as for the
+    // other fields (SFA_ERR_NUMERIC); a finite one <= 0 is out of range (SFA_ERR_ARGUMENT).
     const int32_t n = s->mesh.num_vertices();
     for (int32_t v = 0; v < n; ++v)
         if (!(std::isfinite(edge_length[v]) && edge_length[v] > 0)) {
@@ -21,7 +23,7 @@ void set_size_field(sfa_surface *s, const double *edge_length)
             std::snprintf(message, sizeof message,
                           "vertex %d has the desired edge length %g; it must be finite and > 0", v + s->index_base,
                           edge_length[v]);
-            fail(Status::argument, message);
+            fail(std::isfinite(edge_length[v]) ? Status::argument : Status::numeric, message);
         }
     std::vector<double> size(edge_length, edge_length + n);
     s->size_field.swap(size);
