@@ -292,7 +292,7 @@ enum sfa_param {
         like a size field (::SFA_PARAM_SIZE_GRADATION). So the mesh follows a sheet as it
         thins instead of letting a triangle span it, where it would have to bend round
         something smaller than itself (the vortex flow with T = 6 makes such sheets for
-        most of its period; see the README). The host's own size field is not changed. 1
+        most of its period; see doc/flows.md). The host's own size field is not changed. 1
         asks for nothing finer. A ratio to l, in (0, 1]; default 1. */
     SFA_PARAM_THIN_SHEET_EDGE_RATIO = 27
 };
