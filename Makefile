@@ -166,9 +166,15 @@ $(CLI): $(APP_OBJS) $(LIB_SO) $(LIB_DEV)
 	@mkdir -p $(@D)
 	$(CXX) $(OPENMP) -o $@ $(APP_OBJS) -Llib -lsurfadapt -Wl,-rpath,'$$ORIGIN/../lib'
 
-# Built with one job per core (JOBS=N to change), as `make check` is.
+# `make demo`, `make test` and `make check` build what they need in a make of their own,
+# with one job per core (JOBS=N to change), unless the caller gave -j, whose jobs they
+# then share. Run them alone, not beside `all` under -j: the two makes would build the
+# same files at once.
+JOBS ?= $(shell nproc 2>/dev/null || echo 1)
+PARALLEL = $(if $(filter -j%,$(MAKEFLAGS)),,-j$(or $(JOBS),1))
+
 demo: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) all
+	@$(MAKE) --no-print-directory $(PARALLEL) all
 	@mkdir -p build/demo
 	$(CLI) demo --out build/demo
 
@@ -239,7 +245,7 @@ $(PLUGIN_TEST): tests/plugin/test_dlopen.c | deps
 # otherwise): on cores shared with other work, spinning made unit_crossing_guard and
 # test_adapt ten to twenty times slower (130 s instead of 7 s). Results do not depend on it.
 test: deps-check
-	@$(MAKE) --no-print-directory -j$(JOBS) $(UNIT_TESTS) $(C_TESTS)
+	@$(MAKE) --no-print-directory $(PARALLEL) $(UNIT_TESTS) $(C_TESTS)
 	@OMP_WAIT_POLICY=$${OMP_WAIT_POLICY:-passive} scripts/run-tests.sh $(UNIT_TESTS) $(C_TESTS)
 
 # What `make check` runs, built in parallel (one job per core, JOBS=N to change) once
@@ -247,10 +253,9 @@ test: deps-check
 # after another.
 CHECK_PROGRAMS := all $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) $(FORTRAN_EXAMPLE) $(C_EXAMPLE) $(PLUGIN_TEST) $(FIDELITY) \
                   $(SAN_TESTS) $(SAN_UNIT_TESTS) $(REPLAYS) $(SOAK)
-JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 check-programs: $(CHECK_PROGRAMS)
 check: deps-check
-	@$(MAKE) --no-print-directory -j$(JOBS) check-programs
+	@$(MAKE) --no-print-directory $(PARALLEL) check-programs
 	@scripts/run-tests.sh $(C_TESTS) $(UNIT_TESTS) $(FORTRAN_TEST) "$(FORTRAN_EXAMPLE) 60" $(C_EXAMPLE) \
 	  "OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive $(SOAK) --iterations $(SOAK_CHECK_ITERATIONS) --seed $(SOAK_CHECK_SEED)" \
 	  "OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive $(SOAK) --seeds tests/soak/fixed_seeds" \

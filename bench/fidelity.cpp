@@ -314,12 +314,27 @@ const char *const usage_text =
     "  --worst K lists the K largest, --by-turn groups the error by the normals' turn,\n"
     "  --angles-only prints the angles alone, --json one JSON line\n";
 
-int usage(const char *wrong = nullptr)
+// Prints why (if anything is given), then the usage; returns the status of a usage error.
+int usage(const char *why = nullptr, const char *what = nullptr)
 {
-    if (wrong)
-        std::fprintf(stderr, "fidelity: unknown option or missing value: '%s'\n", wrong);
+    if (why)
+        std::fprintf(stderr, "fidelity: %s '%s'\n", why, what);
     std::fputs(usage_text, stderr);
     return 2;
+}
+
+// The whole number after option argv[i], at least `least` (i is advanced); false if there is
+// none or it is not such a number.
+bool count_option(int argc, char **argv, int &i, int least, int &value)
+{
+    if (i + 1 >= argc)
+        return false;
+    char *end = nullptr;
+    const long read = std::strtol(argv[++i], &end, 10);
+    if (end == argv[i] || *end != '\0' || read < least || read > 1000000000)
+        return false;
+    value = static_cast<int>(read);
+    return true;
 }
 
 } // namespace
@@ -330,32 +345,37 @@ int main(int argc, char **argv)
     int steps_per_period = 1000;
     bool check_step = false, json = false;
     int worst_count = 0;
-    bool by_turn = false, angles_only = false;
+    bool by_turn = false, angles_only = false, options_end = false;
     for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
+        const char *arg = argv[i], *given = i + 1 < argc ? argv[i + 1] : "";
+        if (options_end || arg[0] != '-') {
+            if (path)
+                return usage("one checkpoint at a time; extra argument", arg);
+            path = arg;
+        } else if (!std::strcmp(arg, "--")) {
+            options_end = true; // what follows is the checkpoint, whatever its name
+        } else if (!std::strcmp(arg, "--help") || !std::strcmp(arg, "-h")) {
             std::fputs(usage_text, stdout);
             return 0;
-        }
-        if (!std::strcmp(argv[i], "--steps-per-period") && i + 1 < argc)
-            steps_per_period = std::atoi(argv[++i]);
-        else if (!std::strcmp(argv[i], "--check-step"))
+        } else if (!std::strcmp(arg, "--steps-per-period")) {
+            if (!count_option(argc, argv, i, 1, steps_per_period))
+                return usage("--steps-per-period needs a whole number of at least 1, not", given);
+        } else if (!std::strcmp(arg, "--worst")) {
+            if (!count_option(argc, argv, i, 0, worst_count))
+                return usage("--worst needs a whole number of at least 0, not", given);
+        } else if (!std::strcmp(arg, "--check-step")) {
             check_step = true;
-        else if (!std::strcmp(argv[i], "--worst") && i + 1 < argc)
-            worst_count = std::atoi(argv[++i]);
-        else if (!std::strcmp(argv[i], "--by-turn"))
+        } else if (!std::strcmp(arg, "--by-turn")) {
             by_turn = true;
-        else if (!std::strcmp(argv[i], "--angles-only"))
+        } else if (!std::strcmp(arg, "--angles-only")) {
             angles_only = true;
-        else if (!std::strcmp(argv[i], "--json"))
+        } else if (!std::strcmp(arg, "--json")) {
             json = true;
-        else if (argv[i][0] != '-' && !path)
-            path = argv[i];
-        else
-            return usage(argv[i]);
+        } else {
+            return usage("unknown option", arg);
+        }
     }
     if (!path)
-        return usage();
-    if (steps_per_period < 1)
         return usage();
     Checkpoint info;
     std::string error;

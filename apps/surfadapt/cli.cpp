@@ -45,15 +45,18 @@ void print_synopsis(const char *command)
         std::fputs("(surfadapt --help explains every command and option)\n", stderr);
         return;
     }
-    // The command's first line, then the lines that continue its options (indented further
-    // and opening with '['); its explanation follows, indented by eight.
-    const std::string prefix = "usage: surfadapt ", continuation = "\n          [";
+    // The command's first line, then the lines that continue its options (indented by more
+    // than two and opening with '['); its explanation follows, indented by eight.
+    const std::string prefix = "usage: surfadapt ";
     const std::string indent(prefix.size() + std::strlen(command) + 1, ' ');
     line += 3; // past "\n  "
     size_t end = text.find('\n', line);
     std::fprintf(stderr, "%s%s\n", prefix.c_str(), text.substr(line, end - line).c_str());
-    while (text.compare(end, continuation.size(), continuation) == 0) {
-        line = end + continuation.size() - 1;
+    while (end != std::string::npos) {
+        const size_t start = text.find_first_not_of(' ', end + 1);
+        if (start == std::string::npos || start - end - 1 <= 2 || text[start] != '[')
+            break;
+        line = start;
         end = text.find('\n', line);
         std::fprintf(stderr, "%s%s\n", indent.c_str(), text.substr(line, end - line).c_str());
     }

@@ -6,6 +6,7 @@
 #include "component_report.hpp"
 #include "mesh_formats.h"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -36,11 +37,15 @@ int info_command(int argc, char **argv)
     std::printf("  unresolved (the surface turns by more than a right angle within a triangle): %.2f %% of the "
                 "area; ",
                 100 * measure(s, SFA_MEASURE_UNRESOLVED_AREA));
+    // 180 is the measure's "none": every triangle is unresolved (no real smallest angle is
+    // above 60). NaN: the measure failed.
     const double resolved_angle = measure(s, SFA_MEASURE_MIN_ANGLE_RESOLVED);
-    if (resolved_angle < 180) // 180: the measure's "none" (no triangle's smallest angle is above 60)
-        std::printf("angles from %.3f degrees elsewhere\n", resolved_angle);
-    else
+    if (std::isnan(resolved_angle))
+        std::printf("the angles elsewhere unavailable\n");
+    else if (resolved_angle >= 180)
         std::printf("no triangle elsewhere\n");
+    else
+        std::printf("angles from %.3f degrees elsewhere\n", resolved_angle);
     print_components(summarize_components(s));
     sfa_destroy(s);
     return 0;

@@ -128,6 +128,19 @@ check "info on a mesh unresolved everywhere says no triangle is left" \
   sh -c "printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >'$work/tet.obj' &&
          '$tool' info '$work/tet.obj' | grep -q '100.00 % of the area; no triangle elsewhere'"
 
+# The command line: options before the checkpoint as after it; --help on standard output;
+# a wrong option or value named, with status 2.
+check "options may come before the checkpoint: the same figures" \
+  sh -c "'$fidelity' --angles-only --json '$work/tracked/t3.obj' >'$work/first.txt' &&
+         '$fidelity' '$work/tracked/t3.obj' --angles-only --json >'$work/after.txt' && cmp -s '$work/first.txt' '$work/after.txt'"
+check "--help explains the options on standard output and exits 0" \
+  sh -c "'$fidelity' --help 2>/dev/null | grep -q -- '--worst K lists the K largest'"
+check "an unknown option is named, with status 2" \
+  sh -c "'$fidelity' '$work/tracked/t3.obj' --bogus 2>'$work/bogus.txt'; [ \$? -eq 2 ] && grep -q \"unknown option '--bogus'\" '$work/bogus.txt'"
+check "a value that is not a count is named, not read as 0" \
+  sh -c "'$fidelity' '$work/tracked/t3.obj' --worst --json 2>'$work/worst.txt'; [ \$? -eq 2 ] && grep -q \"at least 0, not '--json'\" '$work/worst.txt'"
+check "a checkpoint named like an option is read after --" \
+  sh -c "cp '$work/tracked/t0.obj' '$work/-t0.obj' && cd '$work' && '$PWD/$fidelity' --angles-only -- -t0.obj | grep -q '^-t0.obj: enright, T = 3, t = 0, '"
 check "a mesh that is not a checkpoint is refused with the reason" \
   sh -c "printf 'v 0 0 0\n' >'$work/plain.obj'; '$fidelity' '$work/plain.obj' 2>&1 | grep -q 'not a surfadapt checkpoint'"
 
