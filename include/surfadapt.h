@@ -245,9 +245,9 @@ enum sfa_param {
         are left to the fold control. The search costs most where a step carries vertices
         across many edge lengths: with it the Enright run (steps of about 4 edge lengths)
         and the vortex run with T = 2 take about 1.3 times as long, on one thread or two
-        (see the README). 0: motion is cut only against folding. Off by default for that cost, and
-        because without topology change a flow that brings two sheets together (the vortex
-        flow with T = 6) would stop there.
+        (see the README). 0: motion is cut only against folding. Off by default for that
+        cost, and because without topology change a flow that brings two sheets together
+        (the vortex flow with T = 6) would stop there.
         ::SFA_PARAM_TOPOLOGY_CHANGE turns it on as well, and adds contact: see there.
         A flag, 0 or 1; default 0. */
     SFA_PARAM_COLLISION_SAFE_MOTION = 24,

@@ -3,9 +3,9 @@
 // the two sides of the sheet come nearer than their edges, and a triangle spanning the
 // sheet's rim must bend round something smaller than itself: its angles collapse, and the
 // shape error it makes stays on the surface after the sheet has opened up again (the
-// vortex flow with T = 6, doc/flows.md). Asking for shorter edges there lets the mesh follow the
-// sheet as it thins. The vertices are those the crossing guard watches for a facing sheet
-// (near_facing_sheet), found anyway.
+// vortex flow with T = 6, doc/flows.md). Asking for shorter edges there lets the mesh
+// follow the sheet as it thins. The vertices are those the crossing guard watches for a
+// facing sheet (near_facing_sheet), found anyway.
 #pragma once
 
 #include "adapt/surface_data.hpp"

@@ -7,8 +7,9 @@
 // face each other there), a filament thinner than it, or a crease sharper than a right
 // angle; in each the triangle would have to bend round something smaller than itself, and
 // no placement of its corners gives it good angles (the vortex flow with T = 6 leaves all
-// its triangles below 5 degrees in such places, doc/flows.md). On a mesh that resolves its
-// surface (a sphere of 15 edges round turns by 24 degrees an edge) no triangle qualifies.
+// its triangles below 5 degrees in such places, doc/flows.md). On a mesh that resolves
+// its surface (a sphere of 15 edges round turns by 24 degrees an edge) no triangle
+// qualifies.
 #pragma once
 
 #include "mesh/tri_mesh.hpp"
