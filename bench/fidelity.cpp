@@ -312,7 +312,8 @@ const char *const usage_text =
     "  carrying points of the mesh back to t = 0 (RK4, N steps a period; default 1000) and\n"
     "  measuring how far from the start sphere they land; --check-step also with 2N steps,\n"
     "  --worst K lists the K largest, --by-turn groups the error by the normals' turn,\n"
-    "  --angles-only prints the angles alone, --json one JSON line\n";
+    "  --angles-only prints the angles alone, --json one JSON line; options may come\n"
+    "  before or after the checkpoint, and -- ends them (for a file named like one)\n";
 
 // Prints why (if anything is given), then the usage; returns the status of a usage error.
 int usage(const char *why = nullptr, const char *what = nullptr)
