@@ -130,26 +130,23 @@ int main(int argc, char **argv)
             std::fputs(usage, stdout);
             return 0;
         }
-    const std::string command = argv[1];
-    if (command == "demo")
-        return demo_command(argc, argv);
-    if (command == "remesh")
-        return remesh_command(argc, argv);
-    if (command == "repair")
-        return repair_command(argc, argv);
-    if (command == "enright")
-        return enright_command(argc, argv);
-    if (command == "vortex")
-        return vortex_command(argc, argv);
-    if (command == "info")
-        return info_command(argc, argv);
-    if (command == "features")
-        return features_command(argc, argv);
-    if (command == "convert")
-        return convert_command(argc, argv);
-    std::fprintf(stderr,
-                 "surfadapt: unknown command '%s'; the commands are demo, enright, vortex, remesh, info, "
-                 "repair, features and convert (surfadapt --help explains them)\n",
-                 argv[1]);
+    // The commands, in the order the help gives them; the message for an unknown one lists
+    // them from here, so that it names every command there is.
+    static const struct {
+        const char *name;
+        int (*run)(int, char **);
+    } commands[] = {{"demo", demo_command},         {"enright", enright_command}, {"vortex", vortex_command},
+                    {"remesh", remesh_command},     {"info", info_command},       {"repair", repair_command},
+                    {"features", features_command}, {"convert", convert_command}};
+    const size_t count = sizeof commands / sizeof commands[0];
+    std::string names;
+    for (size_t k = 0; k < count; ++k) {
+        if (!std::strcmp(argv[1], commands[k].name))
+            return commands[k].run(argc, argv);
+        names += k == 0 ? "" : k + 1 < count ? ", " : " and ";
+        names += commands[k].name;
+    }
+    std::fprintf(stderr, "surfadapt: unknown command '%s'; the commands are %s (surfadapt --help explains them)\n",
+                 argv[1], names.c_str());
     return 2;
 }
