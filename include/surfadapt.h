@@ -240,8 +240,11 @@ enum sfa_param {
         where it would meet) and decided for every pair whose boxes, swept over the step,
         overlap. Two sheets that keep approaching are thus stopped apart; once they are
         closer than a millionth of their edge length the call fails with ::SFA_ERR_NUMERIC
-        naming the two triangles, the gap and the time, the surface as it was. Pairs that
-        already meet when the call begins are not limited. Neighbours (sharing a vertex)
+        naming the two triangles, the gap and the time, the surface as it was. A pair that
+        touches within the rounding of its coordinates may slide along its contact or
+        open; if the step's positions, each coordinate rounded on its own, would still
+        carry one through the other, the call fails the same way, naming the pair. Pairs
+        that already meet when the call begins are not limited. Neighbours (sharing a vertex)
         are left to the fold control. The search costs most where a step carries vertices
         across many edge lengths: with it the Enright run (steps of about 4 edge lengths)
         and the vortex run with T = 2 take about 1.3 times as long, on one thread or two

@@ -232,13 +232,14 @@ Reach reach_of(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &va, cons
 
 // True if the two cannot meet within dt: the gap between their balls is more than their
 // points' relative motion can close (the ball of each moves with its mean velocity, and
-// each point within its spread of it). The margins cover the rounding: of the speeds, and
-// of centres and radii, which are as exact as the coordinates are far from the origin.
+// each point within its spread of it). The margins cover the rounding: of the speeds, of
+// centres and radii, which are as exact as the coordinates are far from the origin, and of
+// the positions at the end of the step (rounding_of_step's pairs are not out of reach).
 bool out_of_reach(const Reach &s, const Reach &t, double dt)
 {
     const double reach = dt * ((s.velocity - t.velocity).norm() + s.spread + t.spread);
-    const double rounding =
-        1e-14 * (s.centre.cwiseAbs().maxCoeff() + t.centre.cwiseAbs().maxCoeff() + s.radius + t.radius);
+    const double rounding = 1e-14 * (s.centre.cwiseAbs().maxCoeff() + t.centre.cwiseAbs().maxCoeff() + s.radius +
+                                     t.radius + dt * (s.velocity.cwiseAbs().maxCoeff() + t.velocity.cwiseAbs().maxCoeff()));
     const double clear = s.radius + t.radius + (1 + 1e-6) * reach + rounding; // the centres' distance needed
     return (s.centre - t.centre).squaredNorm() > clear * clear;
 }
@@ -250,9 +251,23 @@ bool earlier(const Approach &a, const Approach &b)
     return a.first != b.first ? a.first < b.first : a.second < b.second;
 }
 
-// first_approach and first_approach_with_contacts: `contacts` and `among` may be null.
+// How far the rounding of the pair's positions x + t v (t <= dt), each coordinate rounded
+// on its own, may move its corners relative to each other: a few units in the last place of
+// the largest coordinate at either end of the step (a Runge-Kutta step's positions, summed
+// from four stages, a few more).
+double rounding_of_step(const PairMotion &m, double dt)
+{
+    double scale = 0;
+    for (int k = 0; k < 6; ++k)
+        scale = std::max({scale, m.x[k].cwiseAbs().maxCoeff(), (m.x[k] + dt * m.v[k]).cwiseAbs().maxCoeff()});
+    return 32 * 0x1p-53 * scale;
+}
+
+// first_approach and first_approach_with_contacts: `contacts`, `among` and
+// `within_rounding` may be null.
 Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double contact_gap,
-                           std::vector<Approach> *contacts, const std::vector<int32_t> *among, BlockPartition *kept)
+                           std::vector<Approach> *contacts, const std::vector<int32_t> *among, BlockPartition *kept,
+                           TrianglePairs *within_rounding)
 {
     Approach first;
     first.time = dt;
@@ -275,6 +290,7 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
 
     std::vector<Approach> per_thread(static_cast<size_t>(loop_threads()), first);
     std::vector<std::vector<Approach>> touching(per_thread.size());
+    std::vector<TrianglePairs> rounding_pairs(per_thread.size());
     // Triangles s < t. Their balls are made here, two for each pair the broad phase finds:
     // on vortex T = 2 half as many as one for every triangle, which took 0.81 G of its
     // collision-safe run's 76.9 G instructions.
@@ -321,6 +337,8 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
         }
         const double limit = near ? dt : mine.time;
         Approach pair = pair_approach(m, limit);
+        if (within_rounding && (pair.time == 0 || pair.gap <= rounding_of_step(m, dt)))
+            rounding_pairs[static_cast<size_t>(thread)].emplace_back(s, t);
         if (pair.time == 0)
             return; // they meet or touch already: no plane separates them
         if (pair.time < limit) // the pair would limit the step: measure it more closely
@@ -381,6 +399,9 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
     for (const Approach &a : per_thread)
         if (earlier(a, first))
             first = a;
+    if (within_rounding)
+        for (const auto &list : rounding_pairs)
+            within_rounding->insert(within_rounding->end(), list.begin(), list.end());
     if (contacts) {
         contacts->clear();
         for (const auto &list : touching)
@@ -395,16 +416,17 @@ Approach approach_of_pairs(const TriMesh &mesh, const std::vector<Vec3> &velocit
 } // namespace
 
 Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt,
-                        const std::vector<int32_t> *among, BlockPartition *kept)
+                        const std::vector<int32_t> *among, BlockPartition *kept, TrianglePairs *within_rounding)
 {
-    return approach_of_pairs(mesh, velocity, dt, 0, nullptr, among, kept);
+    return approach_of_pairs(mesh, velocity, dt, 0, nullptr, among, kept, within_rounding);
 }
 
 Approach first_approach_with_contacts(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt,
                                       double contact_gap, std::vector<Approach> &contacts,
-                                      const std::vector<int32_t> *among, BlockPartition *kept)
+                                      const std::vector<int32_t> *among, BlockPartition *kept,
+                                      TrianglePairs *within_rounding)
 {
-    return approach_of_pairs(mesh, velocity, dt, contact_gap, &contacts, among, kept);
+    return approach_of_pairs(mesh, velocity, dt, contact_gap, &contacts, among, kept, within_rounding);
 }
 
 } // namespace sfa

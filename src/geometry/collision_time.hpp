@@ -20,9 +20,13 @@
 #include "mesh/tri_mesh.hpp"
 
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace sfa {
+
+// Pairs of triangles by their numbers.
+using TrianglePairs = std::vector<std::pair<int32_t, int32_t>>;
 
 // The pair of triangles that limits a step.
 struct Approach {
@@ -44,16 +48,22 @@ struct Approach {
 // number of threads. With `among`, only the pairs of which one triangle at least is in it
 // (distinct triangles) are looked at. Otherwise, with `kept`, the triangles are dealt into
 // blocks as it holds them, or it comes to hold them (block_partition.hpp; for a caller whose
-// triangles stay the same between searches).
+// triangles stay the same between searches). With `within_rounding`, the pairs that touch
+// or meet at the start within the rounding of the step's positions are added to it: no
+// plane keeps x + t v, rounded corner by corner, from carrying one of them through the
+// other, so the caller checks them exactly once it has the positions (a soak finding: a
+// uniform translation by 140 carried two triangles 1e-14 apart through each other).
 Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt,
-                        const std::vector<int32_t> *among = nullptr, BlockPartition *kept = nullptr);
+                        const std::vector<int32_t> *among = nullptr, BlockPartition *kept = nullptr,
+                        TrianglePairs *within_rounding = nullptr);
 
 // The same, except that a pair nearer than contact_gap times its size (its longest edge)
 // that would limit the step is put into `contacts` (sorted by its triangles) instead of
-// limiting it: motion/safe_motion moves the two together. `among` and `kept` as for
-// first_approach.
+// limiting it: motion/safe_motion moves the two together. `among`, `kept` and
+// `within_rounding` as for first_approach.
 Approach first_approach_with_contacts(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt,
                                       double contact_gap, std::vector<Approach> &contacts,
-                                      const std::vector<int32_t> *among = nullptr, BlockPartition *kept = nullptr);
+                                      const std::vector<int32_t> *among = nullptr, BlockPartition *kept = nullptr,
+                                      TrianglePairs *within_rounding = nullptr);
 
 } // namespace sfa

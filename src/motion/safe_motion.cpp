@@ -28,6 +28,33 @@ void require_room(const Approach &a, const char *when, int32_t index_base)
     throw Error(Status::numeric, message);
 }
 
+// Throws if the step's positions carry one triangle of a pair the searches found within
+// rounding of each other at the start (`within_rounding`) through the other, which it did
+// not meet at the start. Decided exactly. In real numbers the pair slides along its contact
+// or opens; but each corner's x + t v is rounded on its own, and a pair that close can end
+// up through each other whatever the step (a soak finding: a uniform translation, which
+// moves no triangle relative to another, carried two triangles 1e-14 apart through each
+// other).
+void require_no_crossing_by_rounding(const TriMesh &mesh, TrianglePairs within_rounding,
+                                     const std::vector<Vec3> &moved, int32_t index_base)
+{
+    std::sort(within_rounding.begin(), within_rounding.end()); // the pair named is the same on any threads
+    for (const auto &[a, b] : within_rounding) {
+        const Triangle &p = mesh.tri[a], &q = mesh.tri[b];
+        if (!triangles_intersect(moved[p[0]], moved[p[1]], moved[p[2]], moved[q[0]], moved[q[1]], moved[q[2]]) ||
+            triangles_intersect(mesh.pos[p[0]], mesh.pos[p[1]], mesh.pos[p[2]], mesh.pos[q[0]], mesh.pos[q[1]],
+                                mesh.pos[q[2]]))
+            continue;
+        char message[300];
+        std::snprintf(message, sizeof message,
+                      "triangles %d and %d touch at the start of the step, within the rounding of their coordinates, "
+                      "and the step's positions, each coordinate rounded on its own, would carry one through the "
+                      "other; nothing moved",
+                      a + index_base, b + index_base);
+        throw Error(Status::numeric, message);
+    }
+}
+
 std::vector<Vec3> mean_velocity(const TriMesh &mesh, const Step &step)
 {
     std::vector<Vec3> velocity(step.positions.size());
@@ -62,8 +89,9 @@ std::vector<int32_t> retimed_triangles(const TriMesh &mesh, const std::vector<Ve
 // was, so a later round looks only at the triangles around the changed corners. Returns
 // the first approach of the rest, the contacts left after the last round among them: of
 // the pairs with a retimed corner alone where the first round found nothing but contacts
-// limiting the step.
-Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity, double dt, BlockPartition *blocks)
+// limiting the step. Adds every round's pairs within rounding to `within_rounding`.
+Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity, double dt, BlockPartition *blocks,
+                                TrianglePairs &within_rounding)
 {
     const std::vector<Vec3> own = velocity;
     std::vector<int32_t> parent(own.size());
@@ -74,21 +102,21 @@ Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity
     for (int round = 0; round < max_contact_rounds; ++round) {
         const Approach first =
             first_approach_with_contacts(mesh, velocity, dt, contact_gap_ratio, contacts, round ? &changed : nullptr,
-                                         blocks);
+                                         blocks, &within_rounding);
         if (round == 0)
             only_contacts_limit = !(first.time < dt);
         if (contacts.empty()) {
             if (round == 0)
                 return first;
             if (!only_contacts_limit)
-                return first_approach(mesh, velocity, dt, nullptr, blocks);
+                return first_approach(mesh, velocity, dt, nullptr, blocks, &within_rounding);
             // No pair that kept its velocities limits the step: in the first round no pair
             // but the contacts did, and a contact whose corners all kept their velocities
             // moves as one. So only the pairs with a retimed corner are looked at again
             // (on vortex T = 6 after t = 4.5 this was always so, and looking at every pair
             // again took a third of the advection).
             const std::vector<int32_t> retimed = retimed_triangles(mesh, velocity, own);
-            return first_approach(mesh, velocity, dt, &retimed);
+            return first_approach(mesh, velocity, dt, &retimed, nullptr, &within_rounding);
         }
         for (const Approach &c : contacts) {
             const Triangle &p = mesh.tri[c.first], &q = mesh.tri[c.second];
@@ -118,7 +146,7 @@ Approach move_contacts_together(const TriMesh &mesh, std::vector<Vec3> &velocity
                 changed.push_back(f);
         }
     }
-    return first_approach(mesh, velocity, dt, nullptr, blocks);
+    return first_approach(mesh, velocity, dt, nullptr, blocks, &within_rounding);
 }
 
 // True if the step to `moved` made two triangles meet that did not before, one of them with
@@ -158,8 +186,9 @@ Step collision_safe_explicit_step(const TriMesh &mesh, const std::vector<Vec3> &
 {
     Step step = explicit_step(mesh, velocity, dt, safety, index_base);
     std::vector<Vec3> moving = velocity;
-    const Approach a = contact ? move_contacts_together(mesh, moving, step.dt_taken, blocks)
-                               : first_approach(mesh, moving, step.dt_taken, nullptr, blocks);
+    TrianglePairs within_rounding;
+    const Approach a = contact ? move_contacts_together(mesh, moving, step.dt_taken, blocks, within_rounding)
+                               : first_approach(mesh, moving, step.dt_taken, nullptr, blocks, &within_rounding);
     const bool zoned = moving != velocity;
     if (zoned) // zones moving as one may fold a triangle between them and the rest
         step = explicit_step(mesh, moving, step.dt_taken, safety, index_base);
@@ -171,6 +200,7 @@ Step collision_safe_explicit_step(const TriMesh &mesh, const std::vector<Vec3> &
     }
     if (zoned && zones_made_a_crossing(mesh, velocity, moving, step.positions))
         return collision_safe_explicit_step(mesh, velocity, dt, safety, index_base, false, blocks); // without contact
+    require_no_crossing_by_rounding(mesh, std::move(within_rounding), step.positions, index_base);
     return step;
 }
 
@@ -185,8 +215,9 @@ Step collision_safe_rk4_step(const TriMesh &mesh, const VelocityField &field, do
         Step step = rk4_step(mesh, field, t, h, safety, index_base);
         const std::vector<Vec3> velocity = mean_velocity(mesh, step);
         std::vector<Vec3> moving = velocity;
-        const Approach a = contact ? move_contacts_together(mesh, moving, step.dt_taken, blocks)
-                                   : first_approach(mesh, moving, step.dt_taken, nullptr, blocks);
+        TrianglePairs within_rounding;
+        const Approach a = contact ? move_contacts_together(mesh, moving, step.dt_taken, blocks, within_rounding)
+                                   : first_approach(mesh, moving, step.dt_taken, nullptr, blocks, &within_rounding);
         if (moving != velocity) {
             // Zones moving as one may fold a triangle sooner: then a shorter Runge-Kutta step.
             const Step held = explicit_step(mesh, moving, step.dt_taken, safety, index_base);
@@ -199,6 +230,7 @@ Step collision_safe_rk4_step(const TriMesh &mesh, const VelocityField &field, do
         if (a.time >= step.dt_taken) {
             if (moving != velocity && zones_made_a_crossing(mesh, velocity, moving, step.positions))
                 return collision_safe_rk4_step(mesh, field, t, dt, safety, index_base, false, blocks); // without contact
+            require_no_crossing_by_rounding(mesh, std::move(within_rounding), step.positions, index_base);
             return step;
         }
         char when[40];

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* Collision-safe motion (SFA_PARAM_COLLISION_SAFE_MOTION): two drops driven into each other
  * by the host are stopped apart, or the call fails cleanly, and the surface never passes
- * through itself; without it they pass through each other. The same through sfa_advect. */
+ * through itself; without it they pass through each other. The same through sfa_advect.
+ * Two triangles that touch within rounding are not rounded through each other. */
 #include "support/testing.h"
 
 /* Two spheres of radius 0.2 whose centres are 0.46 apart on the x axis (a gap of 0.06). */
@@ -193,6 +194,81 @@ static void with_topology_change_advected_drops_move_on_together(void **state)
     sfa_destroy(s);
 }
 
+/* Two triangles that touch within the rounding of their coordinates (an edge of each
+ * passes the other's a hair apart), as an adaptation left them in a soak (seed
+ * 20261215006110), and a uniform translation, which moves neither relative to the other.
+ * Each corner's x + dt v is rounded on its own, and that carries one through the other. */
+static const double touching_xyz[18] = {
+    -77.873409080925597, 427.59687682882253,  -344.63315513547957, -100.44766048276591, 417.95652652563422,
+    -350.03944560530056, -77.567464426031862, 430.29100905441339,  -344.17342887587733, -75.584532482022837,
+    422.48164700866636,  -343.01099599971343, -95.859264382713818, 414.8436398112907,   -354.93944932392606,
+    -81.000409007886475, 429.71831454172599,  -341.29379407419805};
+static const int32_t touching_tris[6] = {1, 2, 3, 4, 5, 6};
+static const double translation_dt = 0.21019420662315624;
+
+static sfa_surface *touching_pair(int collision_safe)
+{
+    sfa_surface *s = NULL;
+    assert_int_equal(sfa_create(&s), SFA_OK);
+    assert_ok(s, sfa_set_param(s, SFA_PARAM_COLLISION_SAFE_MOTION, collision_safe));
+    assert_ok(s, sfa_set_mesh(s, 6, touching_xyz, 2, touching_tris, 1));
+    assert_true(self_intersections(s) == 0);
+    return s;
+}
+
+static void translation(void *ctx, int32_t n, const double *xyz, double t, double *vel)
+{
+    (void)ctx, (void)xyz, (void)t;
+    for (int32_t v = 0; v < n; ++v) {
+        vel[3 * v] = 36.77749154987;
+        vel[3 * v + 1] = 292.76650504786585;
+        vel[3 * v + 2] = -617.4492053123314;
+    }
+}
+
+/* Without the check the rounding carries them through each other; with it the step is
+ * refused, naming the pair in the caller's numbering, and nothing moves (sfa_move), or it
+ * goes through without a crossing (sfa_advect's positions are rounded otherwise). */
+static void rounding_never_carries_touching_triangles_through_each_other(void **state)
+{
+    (void)state;
+    double vel[18], dt_taken = 0;
+    translation(NULL, 6, touching_xyz, 0, vel);
+    sfa_surface *unsafe = touching_pair(0);
+    assert_ok(unsafe, sfa_set_velocities(unsafe, vel));
+    assert_ok(unsafe, sfa_move(unsafe, translation_dt, &dt_taken));
+    assert_true(self_intersections(unsafe) == 1);
+    sfa_destroy(unsafe);
+
+    sfa_surface *s = touching_pair(1);
+    assert_ok(s, sfa_set_velocities(s, vel));
+    snapshot before, after;
+    snapshot_take(s, &before);
+    const int rc = sfa_move(s, translation_dt, &dt_taken);
+    assert_error(s, rc, SFA_ERR_NUMERIC, "triangles 1 and 2", "rounding");
+    snapshot_take(s, &after);
+    assert_same_snapshot(&before, &after);
+    snapshot_free(&after);
+    int refused = 0;
+    for (int call = 0; call < 20; ++call) {
+        const int advected = sfa_advect(s, translation, NULL, 0, translation_dt / (call + 1), &dt_taken);
+        if (advected != SFA_OK) {
+            ++refused;
+            assert_error(s, advected, SFA_ERR_NUMERIC, "triangles 1 and 2", "rounding");
+            snapshot_take(s, &after);
+            assert_same_snapshot(&before, &after);
+            snapshot_free(&after);
+        } else {
+            assert_true(self_intersections(s) == 0);
+            snapshot_free(&before);
+            snapshot_take(s, &before);
+        }
+    }
+    print_message("sfa_advect: %d of 20 steps refused, the others without a crossing\n", refused);
+    snapshot_free(&before);
+    sfa_destroy(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -202,6 +278,7 @@ int main(void)
         cmocka_unit_test(advected_drops_never_cross),
         cmocka_unit_test(with_topology_change_touching_drops_move_on_together),
         cmocka_unit_test(with_topology_change_advected_drops_move_on_together),
+        cmocka_unit_test(rounding_never_carries_touching_triangles_through_each_other),
     };
     return cmocka_run_group_tests_name("test_collision_safe_motion", tests, NULL, NULL);
 }

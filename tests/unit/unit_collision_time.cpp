@@ -3,7 +3,8 @@
 // with random velocities no pair meets at any time of the step it allows (checked with
 // the exact triangle test at many times), the step is not needlessly short where the
 // answer is known (two parallel plates closing: a quarter of the gap per triangle), pairs
-// that share a vertex or already meet are not limited, and the result is the same for
+// that share a vertex or already meet are not limited, pairs within the rounding of the
+// step's positions are listed for the caller's exact check, and the result is the same for
 // any number of threads.
 #include "geometry/triangle_intersection.hpp"
 #include "mesh/parallel.hpp"
@@ -145,6 +146,29 @@ void touching_pairs_may_slide_or_open_but_not_close(void **)
     assert_true(first_approach(mesh, v, 1).time == 1);
 }
 
+// A pair that touches within the rounding of the step's positions is listed for the
+// caller's exact check after the step, whichever way it moves; one a hair further apart
+// than that rounding is not.
+void pairs_within_rounding_are_listed(void **)
+{
+    for (const double gap : {1e-16, 0.0, 1e-12}) {
+        const Vec3 x[6] = {Vec3(-1, 0, 0), Vec3(1, 0, 0), Vec3(0, 0.3, -1),
+                           Vec3(0, -1, gap), Vec3(0, 1, gap), Vec3(0.3, 0, 1)};
+        const TriMesh mesh = two_triangles(x);
+        for (const Vec3 &w : {Vec3(0, 0, 1), Vec3(0, 0.5, 0), Vec3(100, 100, 100)}) {
+            const std::vector<Vec3> v(6, w); // the first along with the second: no relative motion
+            TrianglePairs listed;
+            first_approach(mesh, v, 1, nullptr, nullptr, &listed);
+            if (gap < 1e-12) {
+                assert_int_equal(listed.size(), 1);
+                assert_true(listed[0] == std::make_pair(0, 1));
+            } else {
+                assert_true(listed.empty());
+            }
+        }
+    }
+}
+
 // Neighbours (a shared vertex) are the fold control's, and a pair that already meets has
 // no plane to keep: neither limits the step.
 void neighbours_and_meeting_pairs_do_not_limit(void **)
@@ -254,6 +278,7 @@ int main()
         cmocka_unit_test(closing_plates_may_take_a_quarter_of_their_gap),
         cmocka_unit_test(layers_turning_a_hair_apart_may_move_on),
         cmocka_unit_test(touching_pairs_may_slide_or_open_but_not_close),
+        cmocka_unit_test(pairs_within_rounding_are_listed),
         cmocka_unit_test(neighbours_and_meeting_pairs_do_not_limit),
         cmocka_unit_test(the_answer_does_not_depend_on_threads),
         cmocka_unit_test(among_a_few_is_the_earliest_of_their_pairs),
