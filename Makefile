@@ -42,7 +42,11 @@ EIGEN_INC := /usr/include/eigen3
 WARNINGS  := -Wall -Wextra -Wpedantic -Wshadow
 # OpenMP (GCC's libgomp, part of the compiler) for the per-vertex and per-edge loops.
 OPENMP    := -fopenmp
-CXXFLAGS  := -std=c++17 -O2 -g -fPIC -fvisibility=hidden -fvisibility-inlines-hidden $(OPENMP) \
+# Every product and sum rounded on its own (no fused multiply-add where the target has one,
+# which GCC's C++ would otherwise form): the bounds of the geometry's rounding (the exact
+# predicates' filters, collision-safe motion's margins) are derived for that, and the
+# results are then the same bits on every target.
+CXXFLAGS  := -std=c++17 -O2 -g -fPIC -fvisibility=hidden -fvisibility-inlines-hidden -ffp-contract=off $(OPENMP) \
              $(WARNINGS) -Iinclude -Isrc -isystem $(EIGEN_INC)
 CFLAGS    := -std=c11 -O2 -g $(WARNINGS) -Iinclude
 FFLAGS    := -std=f2008 -O2 -g -Wall -Wextra -fimplicit-none

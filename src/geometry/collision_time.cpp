@@ -251,16 +251,18 @@ bool earlier(const Approach &a, const Approach &b)
     return a.first != b.first ? a.first < b.first : a.second < b.second;
 }
 
-// How far the rounding of the pair's positions x + t v (t <= dt), each coordinate rounded
-// on its own, may move its corners relative to each other: a few units in the last place of
-// the largest coordinate at either end of the step (a Runge-Kutta step's positions, summed
-// from four stages, a few more).
+// A gap below which a separating plane does not certify the pair in floating point, in
+// units of 2^-53 of S, the largest coordinate of its corners at either end of the step: the
+// step's positions x + t v, each coordinate rounded on its own (or a Runge-Kutta step's,
+// whose velocity is its displacement over its time), move the corners relative to each
+// other by up to some 14 of them, and the plane's own arithmetic (the projections, the gap,
+// the corners' share of it) errs by up to some 42; the certificate keeps half the gap.
 double rounding_of_step(const PairMotion &m, double dt)
 {
     double scale = 0;
     for (int k = 0; k < 6; ++k)
         scale = std::max({scale, m.x[k].cwiseAbs().maxCoeff(), (m.x[k] + dt * m.v[k]).cwiseAbs().maxCoeff()});
-    return 32 * 0x1p-53 * scale;
+    return 128 * 0x1p-53 * scale;
 }
 
 // first_approach and first_approach_with_contacts: `contacts`, `among` and

@@ -48,11 +48,12 @@ struct Approach {
 // number of threads. With `among`, only the pairs of which one triangle at least is in it
 // (distinct triangles) are looked at. Otherwise, with `kept`, the triangles are dealt into
 // blocks as it holds them, or it comes to hold them (block_partition.hpp; for a caller whose
-// triangles stay the same between searches). With `within_rounding`, the pairs that touch
-// or meet at the start within the rounding of the step's positions are added to it: no
-// plane keeps x + t v, rounded corner by corner, from carrying one of them through the
-// other, so the caller checks them exactly once it has the positions (a soak finding: a
-// uniform translation by 140 carried two triangles 1e-14 apart through each other).
+// triangles stay the same between searches). With `within_rounding`, the pairs too near at
+// the start for a separating plane to certify them in floating point (or that meet
+// already) are added to it: nothing keeps x + t v, rounded corner by corner, from carrying
+// one of them through the other, so the caller checks them exactly once it has the
+// positions (a soak finding: a uniform translation by 140 carried two triangles 1e-14 apart
+// through each other).
 Approach first_approach(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt,
                         const std::vector<int32_t> *among = nullptr, BlockPartition *kept = nullptr,
                         TrianglePairs *within_rounding = nullptr);

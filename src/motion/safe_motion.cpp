@@ -39,6 +39,7 @@ void require_no_crossing_by_rounding(const TriMesh &mesh, TrianglePairs within_r
                                      const std::vector<Vec3> &moved, int32_t index_base)
 {
     std::sort(within_rounding.begin(), within_rounding.end()); // the pair named is the same on any threads
+    within_rounding.erase(std::unique(within_rounding.begin(), within_rounding.end()), within_rounding.end());
     for (const auto &[a, b] : within_rounding) {
         const Triangle &p = mesh.tri[a], &q = mesh.tri[b];
         if (!triangles_intersect(moved[p[0]], moved[p[1]], moved[p[2]], moved[q[0]], moved[q[1]], moved[q[2]]) ||
