@@ -29,12 +29,13 @@ constexpr int max_contact_rounds = 32;
 
 // explicit_step, cut to the collision-free time. Throws Error(Status::numeric) naming the
 // two triangles (numbered from index_base) that stop the step when they are closer than
-// stuck_gap_ratio of their size and still closing. With `contact`, the corners of the
-// triangles in contact instead move together: each group of corners that contacts join
-// (an impact zone, Bridson, Fedkiw and Anderson 2002, §7.4) takes the mean of its
-// velocities, so that it moves as one (an inelastic contact, without rotation). With
-// `blocks`, the search for pairs deals the triangles into blocks as it holds them, or it
-// comes to hold them (geometry/block_partition.hpp): the caller keeps it while the
+// stuck_gap_ratio of their size and still closing, or that touch within rounding and
+// would be rounded through each other by the step's positions. With `contact`, the
+// corners of the triangles in contact instead move together: each group of corners that
+// contacts join (an impact zone, Bridson, Fedkiw and Anderson 2002, §7.4) takes the mean
+// of its velocities, so that it moves as one (an inelastic contact, without rotation).
+// With `blocks`, the search for pairs deals the triangles into blocks as it holds them, or
+// it comes to hold them (geometry/block_partition.hpp): the caller keeps it while the
 // triangles stay the same.
 Step collision_safe_explicit_step(const TriMesh &mesh, const std::vector<Vec3> &velocity, double dt, double safety,
                                   int32_t index_base, bool contact = false, BlockPartition *blocks = nullptr);
