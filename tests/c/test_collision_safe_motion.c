@@ -242,13 +242,16 @@ static void rounding_never_carries_touching_triangles_through_each_other(void **
 
     sfa_surface *s = touching_pair(1);
     assert_ok(s, sfa_set_velocities(s, vel));
+    expect_unchanged(s, sfa_move(s, translation_dt, &dt_taken), SFA_ERR_NUMERIC, "triangles 1 and 2", "rounding");
+    /* With topology change, whose contact moves touching pairs together, the same. */
+    sfa_surface *in_contact = touching_pair(1);
+    assert_ok(in_contact, sfa_set_param(in_contact, SFA_PARAM_TOPOLOGY_CHANGE, 1));
+    assert_ok(in_contact, sfa_set_velocities(in_contact, vel));
+    expect_unchanged(in_contact, sfa_move(in_contact, translation_dt, &dt_taken), SFA_ERR_NUMERIC,
+                     "triangles 1 and 2", "rounding");
+    sfa_destroy(in_contact);
     snapshot before, after;
     snapshot_take(s, &before);
-    const int rc = sfa_move(s, translation_dt, &dt_taken);
-    assert_error(s, rc, SFA_ERR_NUMERIC, "triangles 1 and 2", "rounding");
-    snapshot_take(s, &after);
-    assert_same_snapshot(&before, &after);
-    snapshot_free(&after);
     int refused = 0;
     for (int call = 0; call < 20; ++call) {
         const int advected = sfa_advect(s, translation, NULL, 0, translation_dt / (call + 1), &dt_taken);
