@@ -28,9 +28,17 @@ void require_room(const Approach &a, const char *when, int32_t index_base)
     throw Error(Status::numeric, message);
 }
 
+// True if triangles p and q meet at `moved` but not where they are now. Decided exactly.
+bool meet_only_after(const TriMesh &mesh, const Triangle &p, const Triangle &q, const std::vector<Vec3> &moved)
+{
+    return triangles_intersect(moved[p[0]], moved[p[1]], moved[p[2]], moved[q[0]], moved[q[1]], moved[q[2]]) &&
+           !triangles_intersect(mesh.pos[p[0]], mesh.pos[p[1]], mesh.pos[p[2]], mesh.pos[q[0]], mesh.pos[q[1]],
+                                mesh.pos[q[2]]);
+}
+
 // Throws if the step's positions carry one triangle of a pair the searches found within
 // rounding of each other at the start (`within_rounding`) through the other, which it did
-// not meet at the start. Decided exactly. In real numbers the pair slides along its contact
+// not meet at the start. In real numbers the pair slides along its contact
 // or opens; but each corner's x + t v is rounded on its own, and a pair that close can end
 // up through each other whatever the step (a soak finding: a uniform translation, which
 // moves no triangle relative to another, carried two triangles 1e-14 apart through each
@@ -41,10 +49,7 @@ void require_no_crossing_by_rounding(const TriMesh &mesh, TrianglePairs within_r
     std::sort(within_rounding.begin(), within_rounding.end()); // the pair named is the same on any threads
     within_rounding.erase(std::unique(within_rounding.begin(), within_rounding.end()), within_rounding.end());
     for (const auto &[a, b] : within_rounding) {
-        const Triangle &p = mesh.tri[a], &q = mesh.tri[b];
-        if (!triangles_intersect(moved[p[0]], moved[p[1]], moved[p[2]], moved[q[0]], moved[q[1]], moved[q[2]]) ||
-            triangles_intersect(mesh.pos[p[0]], mesh.pos[p[1]], mesh.pos[p[2]], mesh.pos[q[0]], mesh.pos[q[1]],
-                                mesh.pos[q[2]]))
+        if (!meet_only_after(mesh, mesh.tri[a], mesh.tri[b], moved))
             continue;
         char message[300];
         std::snprintf(message, sizeof message,
@@ -170,11 +175,7 @@ bool zones_made_a_crossing(const TriMesh &mesh, const std::vector<Vec3> &velocit
     char crossed = 0;
     for_each_overlapping_pair_with(boxes, zoned, extent / static_cast<double>(boxes.size()), [&](int32_t a, int32_t b) {
         const Triangle &p = mesh.tri[a], &q = mesh.tri[b];
-        if (share_a_vertex(p, q) ||
-            !triangles_intersect(moved[p[0]], moved[p[1]], moved[p[2]], moved[q[0]], moved[q[1]], moved[q[2]]))
-            return;
-        if (!triangles_intersect(mesh.pos[p[0]], mesh.pos[p[1]], mesh.pos[p[2]], mesh.pos[q[0]], mesh.pos[q[1]],
-                                 mesh.pos[q[2]]))
+        if (!share_a_vertex(p, q) && meet_only_after(mesh, p, q, moved))
             crossed = 1; // a byte: the race writes the same value
     });
     return crossed != 0;
